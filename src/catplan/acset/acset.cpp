@@ -1,0 +1,266 @@
+#include "catplan/acset/acset.hpp"
+
+#include "catplan/base/assert.hpp"
+
+#include <fmt/format.h>
+
+namespace catplan::acset {
+
+ACSet::ACSet(SchemaPtr schema) : schema_(std::move(schema)) {
+    CATPLAN_ASSERT(schema_ != nullptr, "ACSet needs a schema");
+    nparts_.assign(schema_->num_obs(), 0);
+    homs_.resize(schema_->num_homs());
+    attrs_.resize(schema_->num_attrs());
+    nvars_.assign(schema_->num_attr_types(), 0);
+    names_.resize(schema_->num_obs());
+    var_names_.resize(schema_->num_attr_types());
+    index_.resize(schema_->num_homs());
+}
+
+Part ACSet::add_part(ObId x, std::string_view name) {
+    auto p = static_cast<Part>(nparts_[x.index()]++);
+    for (HomId f : schema_->homs_from(x)) {
+        homs_[f.index()].push_back(kNoPart);
+        if (index_[f.index()]) {
+            index_[f.index()]->pos.push_back(0);
+        }
+    }
+    for (HomId g : schema_->homs_into(x)) {
+        if (index_[g.index()]) {
+            index_[g.index()]->lists.emplace_back();
+        }
+    }
+    for (AttrId a : schema_->attrs_from(x)) {
+        attrs_[a.index()].emplace_back();
+    }
+    names_[x.index()].push_back(Symbol::intern(name));
+    return p;
+}
+
+Part ACSet::add_parts(ObId x, std::size_t n) {
+    auto first = static_cast<Part>(nparts_[x.index()]);
+    reserve(x, first + n);
+    for (std::size_t i = 0; i < n; ++i) {
+        add_part(x);
+    }
+    return first;
+}
+
+void ACSet::reserve(ObId x, std::size_t n) {
+    for (HomId f : schema_->homs_from(x)) {
+        homs_[f.index()].reserve(n);
+    }
+    for (AttrId a : schema_->attrs_from(x)) {
+        attrs_[a.index()].reserve(n);
+    }
+    names_[x.index()].reserve(n);
+}
+
+void ACSet::index_insert(HomId f, Part p, Part q) {
+    auto& ix = *index_[f.index()];
+    ix.lists[q].push_back(p);
+    ix.pos[p] = static_cast<std::uint32_t>(ix.lists[q].size() - 1);
+}
+
+void ACSet::index_erase(HomId f, Part p, Part q) {
+    auto& ix = *index_[f.index()];
+    auto& list = ix.lists[q];
+    std::uint32_t i = ix.pos[p];
+    CATPLAN_ASSERT(i < list.size() && list[i] == p, "preimage index out of step");
+    Part moved = list.back();
+    list[i] = moved;
+    ix.pos[moved] = i;
+    list.pop_back();
+}
+
+void ACSet::set_subpart(HomId f, Part p, Part q) {
+    const auto& info = schema_->hom(f);
+    CATPLAN_ASSERT(p < nparts_[info.dom.index()], "set_subpart: part out of range");
+    CATPLAN_ASSERT(q == kNoPart || q < nparts_[info.codom.index()],
+                   "set_subpart: value out of range");
+    Part& cell = homs_[f.index()][p];
+    if (index_[f.index()]) {
+        if (cell != kNoPart) {
+            index_erase(f, p, cell);
+        }
+        if (q != kNoPart) {
+            index_insert(f, p, q);
+        }
+    }
+    cell = q;
+}
+
+const ACSet::Preimage& ACSet::index(HomId f) const {
+    auto& slot = index_[f.index()];
+    if (!slot) {
+        const auto& info = schema_->hom(f);
+        Preimage ix;
+        ix.lists.resize(nparts_[info.codom.index()]);
+        const auto& col = homs_[f.index()];
+        ix.pos.assign(col.size(), 0);
+        for (Part p = 0; p < col.size(); ++p) {
+            if (col[p] != kNoPart) {
+                ix.pos[p] = static_cast<std::uint32_t>(ix.lists[col[p]].size());
+                ix.lists[col[p]].push_back(p);
+            }
+        }
+        slot = std::move(ix);
+    }
+    return *slot;
+}
+
+std::span<const Part> ACSet::incident(HomId f, Part q) const {
+    CATPLAN_ASSERT(q < nparts_[schema_->hom(f).codom.index()], "incident: part out of range");
+    return index(f).lists[q];
+}
+
+void ACSet::build_indexes() const {
+    for (std::uint32_t f = 0; f < schema_->num_homs(); ++f) {
+        index(HomId(f));
+    }
+}
+
+Part ACSet::remove_part(ObId x, Part p) {
+    auto n = nparts_[x.index()];
+    CATPLAN_ASSERT(p < n, "remove_part: part out of range");
+    auto last = static_cast<Part>(n - 1);
+    // Incoming references: to p become unset, to last are redirected to p.
+    for (HomId g : schema_->homs_into(x)) {
+        index(g);
+        std::vector<Part> refs(index(g).lists[p].begin(), index(g).lists[p].end());
+        for (Part r : refs) {
+            set_subpart(g, r, kNoPart);
+        }
+        if (p != last) {
+            refs.assign(index(g).lists[last].begin(), index(g).lists[last].end());
+            for (Part r : refs) {
+                set_subpart(g, r, p);
+            }
+        }
+    }
+    // Outgoing columns: move last into p, then drop the last row.
+    for (HomId f : schema_->homs_from(x)) {
+        set_subpart(f, p, kNoPart);
+        if (p != last) {
+            Part w = homs_[f.index()][last];
+            set_subpart(f, last, kNoPart);
+            set_subpart(f, p, w);
+        }
+        homs_[f.index()].pop_back();
+        if (index_[f.index()]) {
+            index_[f.index()]->pos.pop_back();
+        }
+    }
+    for (HomId g : schema_->homs_into(x)) {
+        auto& lists = index_[g.index()]->lists;
+        CATPLAN_ASSERT(lists.back().empty(), "remove_part: stale references to the last part");
+        lists.pop_back();
+    }
+    for (AttrId a : schema_->attrs_from(x)) {
+        auto& col = attrs_[a.index()];
+        col[p] = col[last];
+        col.pop_back();
+    }
+    auto& names = names_[x.index()];
+    names[p] = names[last];
+    names.pop_back();
+    --nparts_[x.index()];
+    return p == last ? kNoPart : last;
+}
+
+void ACSet::set_subpart(AttrId a, Part p, Value v) {
+    const auto& info = schema_->attr(a);
+    CATPLAN_ASSERT(p < nparts_[info.dom.index()], "set_subpart: part out of range");
+    CATPLAN_ASSERT(!v.is_var() || v.var_index() < nvars_[info.codom.index()],
+                   "set_subpart: no such attribute variable");
+    attrs_[a.index()][p] = v;
+}
+
+Value ACSet::add_var(AttrTypeId t, std::string_view name) {
+    auto j = nvars_[t.index()]++;
+    var_names_[t.index()].push_back(Symbol::intern(name));
+    return Value::var(j);
+}
+
+std::uint32_t ACSet::remove_var(AttrTypeId t, std::uint32_t j) {
+    auto n = nvars_[t.index()];
+    CATPLAN_ASSERT(j < n, "remove_var: variable out of range");
+    std::uint32_t last = n - 1;
+    for (AttrId a : schema_->attrs_into(t)) {
+        for (auto& cell : attrs_[a.index()]) {
+            if (cell == Value::var(j)) {
+                cell = Value();
+            } else if (cell == Value::var(last)) {
+                cell = Value::var(j);
+            }
+        }
+    }
+    auto& names = var_names_[t.index()];
+    names[j] = names[last];
+    names.pop_back();
+    --nvars_[t.index()];
+    return j == last ? UINT32_MAX : last;
+}
+
+void ACSet::set_part_name(ObId x, Part p, std::string_view name) {
+    names_[x.index()][p] = Symbol::intern(name);
+}
+
+void ACSet::set_var_name(AttrTypeId t, std::uint32_t j, std::string_view name) {
+    var_names_[t.index()][j] = Symbol::intern(name);
+}
+
+std::optional<Part> ACSet::find_part(ObId x, std::string_view name) const {
+    if (name.empty()) {
+        return std::nullopt;
+    }
+    Symbol s = Symbol::intern(name);
+    const auto& names = names_[x.index()];
+    for (Part p = 0; p < names.size(); ++p) {
+        if (names[p] == s) {
+            return p;
+        }
+    }
+    return std::nullopt;
+}
+
+std::string ACSet::part_label(ObId x, Part p) const {
+    if (p == kNoPart) {
+        return "_";
+    }
+    auto name = part_name(x, p);
+    return name.empty() ? fmt::format("#{}", p + 1) : std::string(name);
+}
+
+std::string ACSet::value_label(AttrTypeId t, const Value& v) const {
+    if (v.is_var() && v.var_index() < nvars_[t.index()]) {
+        auto name = var_name(t, v.var_index());
+        if (!name.empty()) {
+            return fmt::format("?{}", name);
+        }
+    }
+    return v.to_string();
+}
+
+std::size_t ACSet::total_parts() const {
+    std::size_t total = 0;
+    for (auto n : nparts_) {
+        total += n;
+    }
+    return total;
+}
+
+bool operator==(const ACSet& a, const ACSet& b) {
+    if (a.schema_ != b.schema_) {
+        const auto& s = *a.schema_;
+        const auto& t = *b.schema_;
+        if (s.num_obs() != t.num_obs() || s.num_homs() != t.num_homs() ||
+            s.num_attrs() != t.num_attrs() || s.num_attr_types() != t.num_attr_types()) {
+            return false;
+        }
+    }
+    return a.nparts_ == b.nparts_ && a.homs_ == b.homs_ && a.attrs_ == b.attrs_ &&
+           a.nvars_ == b.nvars_;
+}
+
+} // namespace catplan::acset

@@ -1,0 +1,143 @@
+#include "catplan/acset/acset.hpp"
+#include "catplan/acset/printer.hpp"
+
+#include <gtest/gtest.h>
+#include <random>
+
+namespace catplan::acset {
+namespace {
+
+struct Graph {
+    std::shared_ptr<Schema> s = std::make_shared<Schema>("Graph");
+    ObId v = s->add_ob("V");
+    ObId e = s->add_ob("E");
+    HomId src = s->add_hom("src", e, v);
+    HomId tgt = s->add_hom("tgt", e, v);
+};
+
+std::vector<Part> sorted(std::span<const Part> xs) {
+    std::vector<Part> v(xs.begin(), xs.end());
+    std::sort(v.begin(), v.end());
+    return v;
+}
+
+TEST(ACSet, IncidentFollowsSetSubpart) {
+    Graph g;
+    ACSet x(g.s);
+    x.add_parts(g.v, 3);
+    x.add_parts(g.e, 3);
+    x.set_subpart(g.src, 0, 0);
+    x.set_subpart(g.src, 1, 0);
+    x.set_subpart(g.src, 2, 1);
+    EXPECT_EQ(sorted(x.incident(g.src, 0)), (std::vector<Part>{0, 1}));
+    x.set_subpart(g.src, 1, 2);
+    EXPECT_EQ(sorted(x.incident(g.src, 0)), (std::vector<Part>{0}));
+    EXPECT_EQ(sorted(x.incident(g.src, 2)), (std::vector<Part>{1}));
+    Part v3 = x.add_part(g.v);
+    EXPECT_TRUE(x.incident(g.src, v3).empty());
+}
+
+TEST(ACSet, RemovePartIsPopAndSwap) {
+    Graph g;
+    ACSet x(g.s);
+    x.add_part(g.v, "a");
+    x.add_part(g.v, "b");
+    x.add_part(g.v, "c");
+    x.add_parts(g.e, 2);
+    x.set_subpart(g.src, 0, 0); // a -> c
+    x.set_subpart(g.tgt, 0, 2);
+    x.set_subpart(g.src, 1, 1); // b -> b
+    x.set_subpart(g.tgt, 1, 1);
+    // Removing a: c moves into slot 0, edge 0's source becomes unset.
+    EXPECT_EQ(x.remove_part(g.v, 0), 2u);
+    EXPECT_EQ(x.num_parts(g.v), 2u);
+    EXPECT_EQ(x.part_name(g.v, 0), "c");
+    EXPECT_EQ(x.subpart(g.src, 0), kNoPart);
+    EXPECT_EQ(x.subpart(g.tgt, 0), 0u);
+    EXPECT_EQ(x.subpart(g.src, 1), 1u);
+    EXPECT_EQ(sorted(x.incident(g.tgt, 0)), (std::vector<Part>{0}));
+    // Removing the last part returns kNoPart.
+    EXPECT_EQ(x.remove_part(g.e, 1), kNoPart);
+    EXPECT_EQ(x.num_parts(g.e), 1u);
+}
+
+TEST(ACSet, RemovalKeepsIndexConsistentOnRandomEdits) {
+    Graph g;
+    std::mt19937 rng(7);
+    ACSet x(g.s);
+    x.add_parts(g.v, 20);
+    for (int i = 0; i < 60; ++i) {
+        Part e = x.add_part(g.e);
+        x.set_subpart(g.src, e, rng() % 20);
+        x.set_subpart(g.tgt, e, rng() % 20);
+    }
+    for (int round = 0; round < 15; ++round) {
+        x.remove_part(g.v, static_cast<Part>(rng() % x.num_parts(g.v)));
+        x.remove_part(g.e, static_cast<Part>(rng() % x.num_parts(g.e)));
+        for (HomId f : {g.src, g.tgt}) {
+            for (Part v = 0; v < x.num_parts(g.v); ++v) {
+                std::vector<Part> expect;
+                for (Part e = 0; e < x.num_parts(g.e); ++e) {
+                    if (x.subpart(f, e) == v) {
+                        expect.push_back(e);
+                    }
+                }
+                ASSERT_EQ(sorted(x.incident(f, v)), expect) << "round " << round;
+            }
+        }
+    }
+}
+
+TEST(ACSet, VariablesAndEquality) {
+    auto s = std::make_shared<Schema>("LSet");
+    ObId xo = s->add_ob("X");
+    AttrTypeId d = s->add_attr_type("D", schema::ValueKind::String);
+    AttrId f = s->add_attr("f", xo, d);
+    ACSet a(s);
+    a.add_parts(xo, 3);
+    Value v1 = a.add_var(d);
+    Value v2 = a.add_var(d, "c");
+    a.set_subpart(f, 0, Value::string("a"));
+    a.set_subpart(f, 1, v1);
+    a.set_subpart(f, 2, v2);
+    ACSet b = a;
+    EXPECT_EQ(a, b);
+    b.set_part_name(xo, 0, "named");
+    EXPECT_EQ(a, b) << "names are ignored by equality";
+    b.set_subpart(f, 0, Value::string("b"));
+    EXPECT_FALSE(a == b);
+    EXPECT_EQ(a.remove_var(d, 0), 1u);
+    EXPECT_EQ(a.subpart(f, 1), Value());
+    EXPECT_EQ(a.subpart(f, 2), Value::var(0));
+    EXPECT_EQ(a.value_label(d, a.subpart(f, 2)), "?c");
+}
+
+TEST(ACSet, PrintsTables) {
+    Graph g;
+    ACSet x(g.s);
+    x.add_part(g.v, "a");
+    x.add_part(g.v);
+    Part e = x.add_part(g.e, "e1");
+    x.set_subpart(g.src, e, 0);
+    x.set_subpart(g.tgt, e, 1);
+    EXPECT_EQ(to_tables(x), "V (2 parts)\n"
+                            "  id  name\n"
+                            "  1   a\n"
+                            "  2\n"
+                            "E (1 part)\n"
+                            "  id  name  src  tgt\n"
+                            "  1   e1    a    #2\n");
+}
+
+TEST(Value, DisplayAndKinds) {
+    EXPECT_EQ(Value::real(0.0).to_string(), "0.0");
+    EXPECT_EQ(Value::real(2.5).to_string(), "2.5");
+    EXPECT_EQ(Value::string("red").to_string(), "\"red\"");
+    EXPECT_EQ(Value::var(0).to_string(), "?1");
+    EXPECT_EQ(Value::boolean(true).kind(), schema::ValueKind::Bool);
+    EXPECT_NE(Value::var(0), Value::string("a"));
+    EXPECT_EQ(Value::real(0.0).hash(), Value::real(-0.0).hash());
+}
+
+} // namespace
+} // namespace catplan::acset

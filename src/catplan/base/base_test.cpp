@@ -1,0 +1,52 @@
+#include "catplan/base/diagnostic.hpp"
+#include "catplan/base/result.hpp"
+#include "catplan/base/symbol.hpp"
+#include "catplan/base/union_find.hpp"
+
+#include <gtest/gtest.h>
+
+namespace catplan {
+namespace {
+
+TEST(Symbol, InterningGivesEqualHandlesForEqualText) {
+    EXPECT_EQ(Symbol::intern("red"), Symbol::intern("red"));
+    EXPECT_NE(Symbol::intern("red"), Symbol::intern("green"));
+    EXPECT_EQ(Symbol::intern("purple").str(), "purple");
+    EXPECT_EQ(Symbol().str(), "");
+}
+
+TEST(UnionFind, SmallestIdRepresentsTheSet) {
+    UnionFind uf(5);
+    EXPECT_TRUE(uf.union_sets(3, 1));
+    EXPECT_TRUE(uf.union_sets(4, 3));
+    EXPECT_FALSE(uf.union_sets(1, 4));
+    EXPECT_EQ(uf.find(4), 1u);
+    EXPECT_EQ(uf.find(0), 0u);
+}
+
+TEST(Result, CarriesValueOrReason) {
+    Result<int> ok = 3;
+    Result<int> no = fail("no match");
+    ASSERT_TRUE(ok);
+    EXPECT_EQ(*ok, 3);
+    ASSERT_FALSE(no);
+    EXPECT_EQ(no.error(), "no match");
+}
+
+TEST(Diagnostic, RendersGnuStyleWithCaretAndSortsByLocation) {
+    SourceManager sm;
+    auto f = sm.add_buffer("w.cp", "line one\n  x → Bad\n");
+    DiagnosticSink sink(sm);
+    sink.error({f, 17, 20}, "unknown object 'Bad'");
+    sink.error({f, 0, 4}, "first");
+    EXPECT_EQ(sink.num_errors(), 2u);
+    EXPECT_EQ(sink.render(), "w.cp:1:1: error: first\n"
+                             "    1 | line one\n"
+                             "      | ^~~~\n"
+                             "w.cp:2:7: error: unknown object 'Bad'\n"
+                             "    2 |   x → Bad\n"
+                             "      |       ^~~\n");
+}
+
+} // namespace
+} // namespace catplan

@@ -1,0 +1,56 @@
+#pragma once
+// Diagnostics for bad user input, rendered GNU style:
+//
+//   kitchen.cp:12:17: error: unknown object 'Ingredient'
+//      12 |   on::Hom(Ingredient, Thing)
+//         |           ^~~~~~~~~~
+//
+// A phase appends every error it finds to a DiagnosticSink and keeps going; the driver renders them
+// all at once, sorted by location, and exits with code 2.
+
+#include "catplan/base/source.hpp"
+
+#include <string>
+#include <vector>
+
+namespace catplan {
+
+enum class Severity { Error, Warning, Note };
+
+struct Diagnostic {
+    Severity severity = Severity::Error;
+    SourceRange range;
+    std::string message;
+    /// Follow-up notes, each optionally located ("note: first declared here").
+    std::vector<std::pair<SourceRange, std::string>> notes;
+};
+
+class DiagnosticSink {
+public:
+    explicit DiagnosticSink(const SourceManager& sources) : sources_(&sources) {}
+
+    /// Records an error at a range (an invalid range renders without location).
+    Diagnostic& error(SourceRange range, std::string message);
+    /// Records a warning at a range.
+    Diagnostic& warning(SourceRange range, std::string message);
+    /// Records an error that belongs to no source text (a missing file, a bad option).
+    Diagnostic& error(std::string message) { return error(SourceRange{}, std::move(message)); }
+
+    bool has_errors() const { return num_errors_ > 0; }
+    std::size_t num_errors() const { return num_errors_; }
+    const std::vector<Diagnostic>& diagnostics() const { return diagnostics_; }
+
+    /// All diagnostics, stably sorted by file and offset, with source lines and carets.
+    std::string render() const;
+    /// One diagnostic with its notes.
+    std::string render(const Diagnostic& d) const;
+
+private:
+    std::string render_one(Severity severity, SourceRange range, const std::string& message) const;
+
+    const SourceManager* sources_;
+    std::vector<Diagnostic> diagnostics_;
+    std::size_t num_errors_ = 0;
+};
+
+} // namespace catplan
