@@ -50,3 +50,32 @@ TEST(Diagnostic, RendersGnuStyleWithCaretAndSortsByLocation) {
 
 } // namespace
 } // namespace catplan
+
+#include "catplan/base/output_file.hpp"
+
+#include <filesystem>
+#include <fstream>
+
+namespace catplan {
+namespace {
+
+TEST(OutputFile, WritesWholeFileAndFailsCleanly) {
+    auto dir = std::filesystem::temp_directory_path() / "catplan_output_file_test";
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    std::string error;
+    auto path = (dir / "out.txt").string();
+    ASSERT_TRUE(write_file_atomically(path, "hello\n", error)) << error;
+    std::ifstream in(path);
+    std::string line;
+    std::getline(in, line);
+    EXPECT_EQ(line, "hello");
+    EXPECT_FALSE(write_file_atomically((dir / "missing" / "x.txt").string(), "x", error));
+    EXPECT_NE(error.find("missing"), std::string::npos);
+    // Only the target remains: no temporary files left behind.
+    EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir), {}), 1);
+    std::filesystem::remove_all(dir);
+}
+
+} // namespace
+} // namespace catplan

@@ -1,0 +1,43 @@
+# The two commands of the README. Both install what is missing (tools/install-deps.sh) and build
+# what is needed; the CMake presets hold the build settings.
+.PHONY: all deps demo test build release bench format check-format check-layers clean
+
+JOBS ?= 2
+
+all: release
+
+deps:
+	@./tools/install-deps.sh
+
+build: deps
+	cmake --preset dev >/dev/null
+	cmake --build --preset dev -j $(JOBS)
+
+release: deps
+	cmake --preset release >/dev/null
+	cmake --build --preset release -j $(JOBS) --target catplan
+
+# Every test (unit, golden, examples) under AddressSanitizer and UndefinedBehaviorSanitizer.
+test: build
+	ctest --preset dev -j $(JOBS)
+
+# The main job: the paper's case study, printed readably.
+demo: release
+	@./tools/demo.sh build/release/src/catplan/cli/catplan
+
+bench: deps
+	cmake --preset release >/dev/null
+	cmake --build --preset release -j $(JOBS)
+	./tools/run-benchmarks.sh build/release
+
+format:
+	find src tests bench -name '*.[ch]pp' | xargs clang-format -i
+
+check-format:
+	find src tests bench -name '*.[ch]pp' | xargs clang-format --dry-run --Werror
+
+check-layers:
+	python3 tools/check_layers.py
+
+clean:
+	rm -rf build

@@ -1,0 +1,357 @@
+#include "catplan/cli/commands.hpp"
+
+#include "catplan/acset/printer.hpp"
+#include "catplan/base/diagnostic.hpp"
+#include "catplan/base/output_file.hpp"
+#include "catplan/hom/hom_search.hpp"
+#include "catplan/hom/morphism.hpp"
+#include "catplan/json/json.hpp"
+#include "catplan/lang/module.hpp"
+#include "catplan/schema/printer.hpp"
+
+#include <CLI/CLI.hpp>
+#include <filesystem>
+#include <fmt/format.h>
+#include <memory>
+#include <ostream>
+
+namespace catplan::cli {
+namespace {
+
+// Everything one command loaded: the sources outlive the diagnostics that point into them.
+struct Session {
+    SourceManager sources;
+    DiagnosticSink sink{sources};
+};
+
+// Prints the diagnostics collected so far; returns true when there were errors.
+bool report(const Session& s, std::ostream& err) {
+    err << s.sink.render();
+    return s.sink.has_errors();
+}
+
+void error(std::ostream& err, const std::string& message) {
+    err << "catplan: error: " << message << "\n";
+}
+
+// Prints to stdout, or writes the whole text to a file (through a temporary file and a rename).
+int emit(const std::string& text, const std::string& output, std::ostream& out, std::ostream& err) {
+    if (output.empty() || output == "-") {
+        out << text;
+        return kOk;
+    }
+    std::string why;
+    if (!write_file_atomically(output, text, why)) {
+        error(err, why);
+        return kBadInput;
+    }
+    return kOk;
+}
+
+std::string declared_names(const lang::Module& m) {
+    std::string names;
+    for (const auto& d : m.declarations()) {
+        names += (names.empty() ? "" : ", ") + d.name;
+    }
+    return names.empty() ? "none" : names;
+}
+
+// The declaration `name` of the wanted kind, or an error message on err.
+const lang::Declaration* find_declaration(const lang::Module& m, const std::string& file,
+                                          const std::string& name,
+                                          std::optional<lang::DeclKind> kind, std::ostream& err) {
+    const auto* d = m.find(name);
+    if (d == nullptr) {
+        error(err, fmt::format("'{}' declares nothing named '{}' (declared: {})", file, name,
+                               declared_names(m)));
+        return nullptr;
+    }
+    if (kind && d->kind != *kind) {
+        error(err, fmt::format("'{}' is a {}, not a {}", name,
+                               d->kind == lang::DeclKind::Schema ? "schema" : "instance",
+                               *kind == lang::DeclKind::Schema ? "schema" : "instance"));
+        return nullptr;
+    }
+    return d;
+}
+
+// ---- check ----------------------------------------------------------------------------------
+
+int cmd_check(const std::vector<std::string>& files, std::ostream& out, std::ostream& err) {
+    Session s;
+    std::vector<lang::Module> modules;
+    for (const auto& f : files) {
+        modules.push_back(lang::load_file(f, s.sources, s.sink));
+    }
+    if (report(s, err)) {
+        return kBadInput;
+    }
+    for (std::size_t i = 0; i < files.size(); ++i) {
+        for (const auto& d : modules[i].declarations()) {
+            if (!d.imported) {
+                out << lang::summarize(d) << "\n";
+            }
+        }
+    }
+    return kOk;
+}
+
+// ---- show -----------------------------------------------------------------------------------
+
+int cmd_show(const std::string& file, const std::string& name, std::ostream& out,
+             std::ostream& err) {
+    Session s;
+    auto m = lang::load_file(file, s.sources, s.sink);
+    if (report(s, err)) {
+        return kBadInput;
+    }
+    const auto* d = find_declaration(m, file, name, std::nullopt, err);
+    if (d == nullptr) {
+        return kBadInput;
+    }
+    if (d->kind == lang::DeclKind::Schema) {
+        out << schema::describe(*d->schema);
+    } else {
+        out << fmt::format("instance {} of {}\n", d->name, d->schema->name());
+        out << acset::to_tables(*d->instance);
+    }
+    return kOk;
+}
+
+// ---- homs -----------------------------------------------------------------------------------
+
+std::string format_morphism(const hom::ACSetMorphism& f, const acset::ACSet& x,
+                            const acset::ACSet& y) {
+    const auto& s = x.schema();
+    std::string text;
+    for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
+        ObId ob(o);
+        if (x.num_parts(ob) == 0) {
+            continue;
+        }
+        std::string line;
+        for (Part p = 0; p < x.num_parts(ob); ++p) {
+            line += fmt::format("{}{} ↦ {}", p ? ", " : "", x.part_label(ob, p),
+                                y.part_label(ob, f.components[o][p]));
+        }
+        text += fmt::format("  {}: {}\n", s.ob(ob).name, line);
+    }
+    for (std::uint32_t t = 0; t < s.num_attr_types(); ++t) {
+        AttrTypeId ty(t);
+        if (x.num_vars(ty) == 0) {
+            continue;
+        }
+        std::string line;
+        for (std::uint32_t j = 0; j < x.num_vars(ty); ++j) {
+            line += fmt::format("{}{} ↦ {}", j ? ", " : "",
+                                x.value_label(ty, acset::Value::var(j)),
+                                y.value_label(ty, f.var_components[t][j]));
+        }
+        text += fmt::format("  {}: {}\n", s.attr_type(ty).name, line);
+    }
+    return text;
+}
+
+struct HomsArgs {
+    std::string file, from, to;
+    bool monic = false, iso = false, count = false, all = false;
+    std::size_t max = 0;
+};
+
+int cmd_homs(const HomsArgs& a, std::ostream& out, std::ostream& err) {
+    Session s;
+    auto m = lang::load_file(a.file, s.sources, s.sink);
+    if (report(s, err)) {
+        return kBadInput;
+    }
+    const auto* dx = find_declaration(m, a.file, a.from, lang::DeclKind::Instance, err);
+    const auto* dy = find_declaration(m, a.file, a.to, lang::DeclKind::Instance, err);
+    if (dx == nullptr || dy == nullptr) {
+        return kBadInput;
+    }
+    if (dx->schema != dy->schema) {
+        error(err, fmt::format("'{}' is on schema {} but '{}' is on schema {}", a.from,
+                               dx->schema->name(), a.to, dy->schema->name()));
+        return kBadInput;
+    }
+    const auto& x = *dx->instance;
+    const auto& y = *dy->instance;
+    hom::HomSearchOptions options;
+    options.monic_all = a.monic;
+    options.iso = a.iso;
+    if (a.count) {
+        auto result = hom::count_homomorphisms(x, y, options);
+        if (!result.error.empty()) {
+            error(err, result.error);
+            return kBadInput;
+        }
+        out << result.count << "\n";
+        return result.count > 0 ? kOk : kNo;
+    }
+    options.max_results = a.all ? (a.max ? a.max : SIZE_MAX) : 1;
+    auto result = hom::find_homomorphisms(x, y, options);
+    if (!result.error.empty()) {
+        error(err, result.error);
+        return kBadInput;
+    }
+    if (result.morphisms.empty()) {
+        out << fmt::format("no {}homomorphism from {} to {}\n", a.monic ? "monic " : "", a.from,
+                           a.to);
+        return kNo;
+    }
+    for (std::size_t i = 0; i < result.morphisms.size(); ++i) {
+        out << fmt::format("homomorphism {}:\n", i + 1);
+        out << format_morphism(result.morphisms[i], x, y);
+    }
+    return kOk;
+}
+
+// ---- json -----------------------------------------------------------------------------------
+
+int cmd_json_export(const std::string& file, const std::string& name, bool pretty,
+                    const std::string& output, std::ostream& out, std::ostream& err) {
+    Session s;
+    auto m = lang::load_file(file, s.sources, s.sink);
+    if (report(s, err)) {
+        return kBadInput;
+    }
+    const auto* d = find_declaration(m, file, name, std::nullopt, err);
+    if (d == nullptr) {
+        return kBadInput;
+    }
+    std::string text = d->kind == lang::DeclKind::Schema ? json::write_schema(*d->schema, pretty)
+                                                         : json::write_acset(*d->instance, pretty);
+    return emit(text + "\n", output, out, err);
+}
+
+std::string file_stem(const std::string& path) {
+    return std::filesystem::path(path).stem().string();
+}
+
+int cmd_json_import(const std::vector<std::string>& args, std::string name,
+                    const std::string& output, std::ostream& out, std::ostream& err) {
+    Session s;
+    const std::string& json_file = args.back();
+    if (name.empty()) {
+        name = file_stem(json_file);
+    }
+    if (args.size() == 1) {
+        auto f = s.sources.add_file(json_file);
+        if (!f) {
+            error(err, fmt::format("cannot read '{}'", json_file));
+            return kBadInput;
+        }
+        auto sch = json::read_schema(name, *f, s.sources, s.sink);
+        if (report(s, err) || sch == nullptr) {
+            return kBadInput;
+        }
+        return emit(lang::print_schema(*sch), output, out, err);
+    }
+    if (args.size() != 3) {
+        error(err, "json import takes SCHEMA_FILE SCHEMA JSON_FILE, or JSON_FILE for a schema");
+        return kBadInput;
+    }
+    auto m = lang::load_file(args[0], s.sources, s.sink);
+    if (report(s, err)) {
+        return kBadInput;
+    }
+    const auto* d = find_declaration(m, args[0], args[1], lang::DeclKind::Schema, err);
+    if (d == nullptr) {
+        return kBadInput;
+    }
+    auto f = s.sources.add_file(json_file);
+    if (!f) {
+        error(err, fmt::format("cannot read '{}'", json_file));
+        return kBadInput;
+    }
+    auto x = json::read_acset(d->schema, *f, s.sources, s.sink);
+    if (report(s, err) || !x) {
+        return kBadInput;
+    }
+    return emit(lang::print_instance(*x, name), output, out, err);
+}
+
+} // namespace
+
+int run(int argc, char** argv, std::ostream& out, std::ostream& err) {
+    CLI::App app{"catplan: categorical task planning and plan transfer between planning domains.\n"
+                 "Exit codes: 0 ok, 1 no (e.g. no homomorphism), 2 bad input, 3 unsupported, "
+                 "4 limit reached, 70 internal error (docs/exit-codes.md)."};
+    app.require_subcommand(1);
+    app.set_version_flag("--version", "catplan 0.1.0");
+
+    std::vector<std::string> check_files;
+    auto* check = app.add_subcommand("check", "Parse and validate files; one summary line per "
+                                              "declaration");
+    check->add_option("FILE", check_files, "language files (.cp)")->required();
+
+    std::string show_file, show_name;
+    auto* show = app.add_subcommand("show", "Print a state as tables or a schema as lists");
+    show->add_option("FILE", show_file)->required();
+    show->add_option("NAME", show_name, "a schema or instance declared in FILE")->required();
+
+    HomsArgs homs_args;
+    auto* homs = app.add_subcommand("homs", "Find homomorphisms between two instances "
+                                            "(exit 1 when there are none)");
+    homs->add_option("FILE", homs_args.file)->required();
+    homs->add_option("A", homs_args.from, "domain instance")->required();
+    homs->add_option("B", homs_args.to, "codomain instance")->required();
+    homs->add_flag("--monic", homs_args.monic, "injective on every object");
+    homs->add_flag("--iso", homs_args.iso, "isomorphisms only");
+    auto* count_flag = homs->add_flag("--count", homs_args.count, "print how many there are");
+    homs->add_flag("--all", homs_args.all, "print all of them (default: the first)")
+        ->excludes(count_flag);
+    homs->add_option("--max", homs_args.max, "with --all, stop after this many");
+
+    auto* json_cmd = app.add_subcommand("json", "Catlab ACSet JSON interop");
+    json_cmd->require_subcommand(1);
+    std::string export_file, export_name, export_output;
+    bool export_pretty = false;
+    auto* json_export = json_cmd->add_subcommand("export", "Write a schema or instance as JSON");
+    json_export->add_option("FILE", export_file)->required();
+    json_export->add_option("NAME", export_name)->required();
+    json_export->add_flag("--pretty", export_pretty, "indent the JSON");
+    json_export->add_option("-o,--output", export_output, "write to this file instead of stdout");
+    std::vector<std::string> import_args;
+    std::string import_name, import_output;
+    auto* json_import = json_cmd->add_subcommand(
+        "import", "Read Catlab JSON and print it in the language: SCHEMA_FILE SCHEMA JSON_FILE for "
+                  "an instance, or JSON_FILE alone for a schema");
+    json_import->add_option("ARGS", import_args, "SCHEMA_FILE SCHEMA JSON_FILE | JSON_FILE")
+        ->required()
+        ->expected(1, 3);
+    json_import->add_option("--name", import_name, "name of the declaration printed");
+    json_import->add_option("-o,--output", import_output, "write to this file instead of stdout");
+
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::CallForHelp& e) {
+        return app.exit(e, out, err);
+    } catch (const CLI::CallForAllHelp& e) {
+        return app.exit(e, out, err);
+    } catch (const CLI::CallForVersion& e) {
+        return app.exit(e, out, err);
+    } catch (const CLI::ParseError& e) {
+        app.exit(e, out, err);
+        return kBadInput;
+    }
+
+    if (check->parsed()) {
+        return cmd_check(check_files, out, err);
+    }
+    if (show->parsed()) {
+        return cmd_show(show_file, show_name, out, err);
+    }
+    if (homs->parsed()) {
+        return cmd_homs(homs_args, out, err);
+    }
+    if (json_export->parsed()) {
+        return cmd_json_export(export_file, export_name, export_pretty, export_output, out, err);
+    }
+    if (json_import->parsed()) {
+        return cmd_json_import(import_args, import_name, import_output, out, err);
+    }
+    return kBadInput;
+}
+
+} // namespace catplan::cli

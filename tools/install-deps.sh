@@ -1,0 +1,29 @@
+#!/bin/sh
+# Installs the Debian packages catplan needs to build, test and run its demo, if any is missing.
+# Runs apt-get as root, or through sudo for a user who is not root.
+set -eu
+
+PACKAGES="g++ cmake ninja-build make python3 pkg-config clang-format
+libgtest-dev libgmock-dev libbenchmark-dev libcli11-dev nlohmann-json3-dev libfmt-dev
+libsqlite3-dev graphviz"
+
+missing=""
+for p in $PACKAGES; do
+    if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+        missing="$missing $p"
+    fi
+done
+[ -z "$missing" ] && exit 0
+
+if [ "$(id -u)" -eq 0 ]; then
+    SUDO=""
+elif command -v sudo >/dev/null 2>&1; then
+    SUDO="sudo"
+else
+    echo "catplan: these Debian packages are missing and I am not root (no sudo):$missing" >&2
+    exit 1
+fi
+echo "catplan: installing missing Debian packages:$missing"
+$SUDO apt-get update -q
+# shellcheck disable=SC2086
+DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -q --no-install-recommends $missing
