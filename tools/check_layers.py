@@ -12,7 +12,9 @@ INCLUDE = re.compile(r'^\s*#\s*include\s+"catplan/([a-z_]+)/([^"]+)"')
 
 
 def main() -> int:
-    root = pathlib.Path(__file__).resolve().parent.parent / "src" / "catplan"
+    # Optional argument: the src/catplan folder to check (the self-test points it at a fixture).
+    default = pathlib.Path(__file__).resolve().parent.parent / "src" / "catplan"
+    root = pathlib.Path(sys.argv[1]) if len(sys.argv) > 1 else default
     errors = []
     for path in sorted(root.rglob("*.[ch]pp")):
         layer = path.relative_to(root).parts[0]
