@@ -1,0 +1,173 @@
+#include "catplan/lang/module.hpp"
+#include "catplan/lang/syntax.hpp"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+#include <set>
+
+namespace catplan::lang {
+
+using acset::ACSet;
+using acset::Value;
+using schema::Path;
+using schema::Schema;
+using schema::ValueKind;
+
+namespace {
+
+std::string plural(std::size_t n, std::string_view noun) {
+    return fmt::format("{} {}{}", n, noun, n == 1 ? "" : "s");
+}
+
+std::string path_term(const Schema& s, const Path& p) {
+    std::vector<std::string> names;
+    for (HomId f : p.homs) {
+        names.push_back(s.hom(f).name);
+    }
+    if (p.attr) {
+        names.push_back(s.attr(*p.attr).name);
+    }
+    if (names.empty()) {
+        return fmt::format("id({})", s.ob(p.dom).name);
+    }
+    if (names.size() == 1) {
+        return names[0];
+    }
+    return fmt::format("compose({})", fmt::join(names, ", "));
+}
+
+} // namespace
+
+std::string summarize(const Declaration& d) {
+    if (d.kind == DeclKind::Schema) {
+        const Schema& s = *d.schema;
+        std::string out = fmt::format("schema {}: {}, {}, {}, {}", d.name,
+                                      plural(s.num_obs(), "object"), plural(s.num_homs(), "hom"),
+                                      plural(s.num_attr_types(), "attribute type"),
+                                      plural(s.num_attrs(), "attribute"));
+        if (!s.equations().empty()) {
+            out += ", " + plural(s.equations().size(), "equation");
+        }
+        return out;
+    }
+    const ACSet& x = *d.instance;
+    const Schema& s = x.schema();
+    std::vector<std::string> counts;
+    for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
+        if (auto n = x.num_parts(ObId(o))) {
+            counts.push_back(fmt::format("{} {}", s.ob(ObId(o)).name, n));
+        }
+    }
+    std::size_t vars = 0;
+    for (std::uint32_t t = 0; t < s.num_attr_types(); ++t) {
+        vars += x.num_vars(AttrTypeId(t));
+    }
+    std::string out = fmt::format("instance {} ({}): {}", d.name, s.name(),
+                                  plural(x.total_parts(), "part"));
+    if (!counts.empty()) {
+        out += fmt::format(" ({})", fmt::join(counts, ", "));
+    }
+    return out + ", " + plural(vars, "variable");
+}
+
+std::string print_schema(const Schema& s) {
+    std::string out = fmt::format("@present {}(FreeSchema) begin\n", s.name());
+    for (std::uint32_t i = 0; i < s.num_obs(); ++i) {
+        out += fmt::format("  {}::Ob\n", s.ob(ObId(i)).name);
+    }
+    for (std::uint32_t i = 0; i < s.num_homs(); ++i) {
+        const auto& h = s.hom(HomId(i));
+        out += fmt::format("  {}::Hom({}, {})\n", h.name, s.ob(h.dom).name, s.ob(h.codom).name);
+    }
+    for (std::uint32_t i = 0; i < s.num_attr_types(); ++i) {
+        const auto& t = s.attr_type(AttrTypeId(i));
+        if (t.kind == ValueKind::Unknown) {
+            out += fmt::format("  {}::AttrType\n", t.name);
+        } else {
+            out += fmt::format("  {}::AttrType({})\n", t.name, schema::to_string(t.kind));
+        }
+    }
+    for (std::uint32_t i = 0; i < s.num_attrs(); ++i) {
+        const auto& a = s.attr(AttrId(i));
+        out += fmt::format("  {}::Attr({}, {})\n", a.name, s.ob(a.dom).name,
+                           s.attr_type(a.codom).name);
+    }
+    for (const auto& eq : s.equations()) {
+        out += fmt::format("  {} == {}\n", path_term(s, eq.lhs), path_term(s, eq.rhs));
+    }
+    return out + "end\n";
+}
+
+std::string print_instance(const ACSet& x, std::string_view name) {
+    const Schema& s = x.schema();
+    // Every part and variable becomes a generator; the names must be distinct identifiers that
+    // do not shadow each other, so others get generated names.
+    std::set<std::string> used;
+    auto pick = [&](std::string_view wanted, std::string fallback) {
+        std::string n(wanted);
+        if (!is_identifier(n) || used.count(n)) {
+            n = fallback;
+            while (used.count(n)) {
+                n += "_";
+            }
+        }
+        used.insert(n);
+        return n;
+    };
+    std::vector<std::vector<std::string>> part_names(s.num_obs());
+    for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
+        for (Part p = 0; p < x.num_parts(ObId(o)); ++p) {
+            part_names[o].push_back(pick(x.part_name(ObId(o), p),
+                                         fmt::format("_{}{}", s.ob(ObId(o)).name, p + 1)));
+        }
+    }
+    std::vector<std::vector<std::string>> var_names(s.num_attr_types());
+    for (std::uint32_t t = 0; t < s.num_attr_types(); ++t) {
+        for (std::uint32_t j = 0; j < x.num_vars(AttrTypeId(t)); ++j) {
+            var_names[t].push_back(pick(x.var_name(AttrTypeId(t), j),
+                                        fmt::format("_{}{}", s.attr_type(AttrTypeId(t)).name,
+                                                    j + 1)));
+        }
+    }
+    std::string out = fmt::format("@acset_colim {}({}) begin\n", name, s.name());
+    for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
+        if (!part_names[o].empty()) {
+            out += fmt::format("  ({})::{}\n", fmt::join(part_names[o], ", "), s.ob(ObId(o)).name);
+        }
+    }
+    for (std::uint32_t t = 0; t < s.num_attr_types(); ++t) {
+        if (!var_names[t].empty()) {
+            out += fmt::format("  ({})::{}\n", fmt::join(var_names[t], ", "),
+                               s.attr_type(AttrTypeId(t)).name);
+        }
+    }
+    for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
+        ObId ob(o);
+        for (Part p = 0; p < x.num_parts(ob); ++p) {
+            const std::string& pn = part_names[o][p];
+            for (HomId f : s.homs_from(ob)) {
+                Part q = x.subpart(f, p);
+                if (q == kNoPart) {
+                    out += fmt::format("  # {}({}) is unset\n", s.hom(f).name, pn);
+                } else {
+                    out += fmt::format("  {}({}) == {}\n", s.hom(f).name, pn,
+                                       part_names[s.hom(f).codom.index()][q]);
+                }
+            }
+            for (AttrId a : s.attrs_from(ob)) {
+                const Value& v = x.subpart(a, p);
+                if (v.is_unset()) {
+                    out += fmt::format("  # {}({}) is unset\n", s.attr(a).name, pn);
+                } else if (v.is_var()) {
+                    out += fmt::format("  {}({}) == {}\n", s.attr(a).name, pn,
+                                       var_names[s.attr(a).codom.index()][v.var_index()]);
+                } else {
+                    out += fmt::format("  {}({}) == {}\n", s.attr(a).name, pn, v.to_string());
+                }
+            }
+        }
+    }
+    return out + "end\n";
+}
+
+} // namespace catplan::lang
