@@ -1,0 +1,522 @@
+#include "catplan/hom/detail/search_engine.hpp"
+
+#include "catplan/base/assert.hpp"
+#include "catplan/base/hash.hpp"
+
+#include <algorithm>
+#include <fmt/format.h>
+#include <limits>
+#include <unordered_map>
+#include <utility>
+
+namespace catplan::hom::detail {
+
+namespace {
+
+using schema::Schema;
+
+// Where the candidates of the chosen part come from: an explicit list, or all parts 0..size-1.
+struct Source {
+    const Part* data = nullptr;
+    std::size_t size = 0;
+};
+
+// Codomain parts of one object grouped by the tuple of their hom values, so that a domain part
+// whose homs all have images finds its candidates with one hash lookup. Parts are grouped by
+// the 64-bit hash of the tuple: a collision only adds candidates, which assign() then rejects.
+struct KeyIndex {
+    bool built = false;
+    std::vector<Part> parts;
+    std::unordered_map<std::uint64_t, std::pair<std::uint32_t, std::uint32_t>> ranges;
+};
+
+struct TrailEntry {
+    bool is_var; // false: a part assignment (ob, x); true: a variable binding (type, var)
+    std::uint32_t a;
+    std::uint32_t b;
+};
+
+class Engine {
+public:
+    Engine(const ACSet& x, const ACSet& y, const HomSearchOptions& opt, SearchMode mode,
+           const std::function<bool(const ACSetMorphism&)>* fn)
+        : x_(x), y_(y), s_(x.schema()), opt_(opt), mode_(mode), fn_(fn) {}
+
+    HomSearchResult run();
+
+private:
+    bool prepare();
+    bool assign(std::uint32_t ob, Part x, Part y);
+    bool bind_var(std::uint32_t t, std::uint32_t v, const Value& value);
+    void undo(std::size_t mark);
+    bool search();
+    bool enumerate_floating(std::size_t i);
+    bool emit();
+    std::size_t estimate(std::uint32_t ob, Part x, Source& src);
+    const KeyIndex& key_index(std::uint32_t ob);
+    std::uint64_t codom_key(std::uint32_t ob, Part y) const;
+
+    const ACSet& x_;
+    const ACSet& y_;
+    const Schema& s_;
+    const HomSearchOptions& opt_;
+    SearchMode mode_;
+    const std::function<bool(const ACSetMorphism&)>* fn_;
+
+    HomSearchResult result_;
+    bool stopped_ = false;
+
+    std::vector<std::vector<Part>> assign_; // per object: image of each domain part
+    std::vector<std::vector<Part>> inv_;    // per monic object: preimage of each codom part
+    std::vector<char> monic_;               // per object
+    std::vector<std::vector<std::vector<Part>>> cand_; // per object, per part: sorted allowed
+    std::vector<char> has_cand_;                       // per object: any candidate set given
+    std::vector<std::vector<Value>> vbind_;            // per type: binding of each domain variable
+    std::vector<std::vector<char>> vused_;             // per monic type: codomain variable taken
+    std::vector<char> monic_t_;                        // per attribute type
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> floating_; // (type, var) to enumerate
+    std::vector<KeyIndex> keys_; // per object, built on first use
+    std::vector<TrailEntry> trail_;
+    ACSetMorphism scratch_;
+};
+
+std::uint64_t Engine::codom_key(std::uint32_t ob, Part y) const {
+    std::uint64_t h = 0x51ed270b27e1f2c3ULL;
+    for (HomId f : s_.homs_from(ObId(ob))) {
+        h = hash_combine(h, y_.subpart(f, y));
+    }
+    return h;
+}
+
+const KeyIndex& Engine::key_index(std::uint32_t ob) {
+    KeyIndex& k = keys_[ob];
+    if (k.built) {
+        return k;
+    }
+    k.built = true;
+    std::size_t n = y_.num_parts(ObId(ob));
+    std::vector<std::pair<std::uint64_t, Part>> keyed(n);
+    for (Part p = 0; p < n; ++p) {
+        keyed[p] = {codom_key(ob, p), p};
+    }
+    // Sorting by (key, part) keeps each group in increasing part order: results stay ordered.
+    std::sort(keyed.begin(), keyed.end());
+    k.parts.resize(n);
+    k.ranges.reserve(n);
+    for (std::size_t i = 0; i < n;) {
+        std::size_t j = i;
+        while (j < n && keyed[j].first == keyed[i].first) {
+            k.parts[j] = keyed[j].second;
+            ++j;
+        }
+        k.ranges.emplace(keyed[i].first,
+                         std::pair{static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(j)});
+        i = j;
+    }
+    return k;
+}
+
+bool Engine::bind_var(std::uint32_t t, std::uint32_t v, const Value& value) {
+    Value& b = vbind_[t][v];
+    if (!b.is_unset()) {
+        return b == value;
+    }
+    if (value.is_unset()) {
+        return false; // a variable needs a value to bind to
+    }
+    if (monic_t_[t]) {
+        if (!value.is_var() || value.var_index() >= vused_[t].size() ||
+            vused_[t][value.var_index()]) {
+            return false;
+        }
+        vused_[t][value.var_index()] = 1;
+    }
+    b = value;
+    trail_.push_back({true, t, v});
+    return true;
+}
+
+bool Engine::assign(std::uint32_t ob, Part x, Part y) {
+    Part cur = assign_[ob][x];
+    if (cur != kNoPart) {
+        return cur == y;
+    }
+    if (has_cand_[ob]) {
+        const auto& allowed = cand_[ob][x];
+        if (!allowed.empty() && !std::binary_search(allowed.begin(), allowed.end(), y)) {
+            return false;
+        }
+    }
+    if (monic_[ob] && inv_[ob][y] != kNoPart) {
+        return false;
+    }
+    // Attributes first: they fail fast and need no recursion.
+    for (AttrId a : s_.attrs_from(ObId(ob))) {
+        const Value& xv = x_.subpart(a, x);
+        const Value& yv = y_.subpart(a, y);
+        if (xv.is_unset()) {
+            if (opt_.iso && !yv.is_unset()) {
+                return false;
+            }
+            continue; // an unset domain cell constrains nothing
+        }
+        if (xv.is_concrete()) {
+            if (!(xv == yv)) {
+                return false;
+            }
+            continue;
+        }
+        if (!bind_var(s_.attr(a).codom.index(), xv.var_index(), yv)) {
+            return false;
+        }
+    }
+    assign_[ob][x] = y;
+    if (monic_[ob]) {
+        inv_[ob][y] = x;
+    }
+    trail_.push_back({false, ob, x});
+    // Forward checking: the images of x's hom values are now determined.
+    for (HomId f : s_.homs_from(ObId(ob))) {
+        Part xf = x_.subpart(f, x);
+        Part yf = y_.subpart(f, y);
+        if (xf == kNoPart) {
+            if (opt_.iso && yf != kNoPart) {
+                return false;
+            }
+            continue; // an unset domain hom value constrains nothing
+        }
+        if (yf == kNoPart || !assign(s_.hom(f).codom.index(), xf, yf)) {
+            return false;
+        }
+    }
+    return true;
+}
+
+void Engine::undo(std::size_t mark) {
+    while (trail_.size() > mark) {
+        TrailEntry e = trail_.back();
+        trail_.pop_back();
+        if (e.is_var) {
+            Value& b = vbind_[e.a][e.b];
+            if (monic_t_[e.a] && b.is_var()) {
+                vused_[e.a][b.var_index()] = 0;
+            }
+            b = Value();
+        } else {
+            Part& y = assign_[e.a][e.b];
+            if (monic_[e.a]) {
+                inv_[e.a][y] = kNoPart;
+            }
+            y = kNoPart;
+        }
+    }
+}
+
+std::size_t Engine::estimate(std::uint32_t ob, Part x, Source& src) {
+    src = Source{nullptr, y_.num_parts(ObId(ob))};
+    if (has_cand_[ob] && !cand_[ob][x].empty()) {
+        src = Source{cand_[ob][x].data(), cand_[ob][x].size()};
+    }
+    auto homs = s_.homs_from(ObId(ob));
+    if (homs.empty()) {
+        return src.size;
+    }
+    bool all_assigned = true;
+    for (HomId f : homs) {
+        Part xf = x_.subpart(f, x);
+        if (xf == kNoPart || assign_[s_.hom(f).codom.index()][xf] == kNoPart) {
+            all_assigned = false;
+            break;
+        }
+    }
+    if (all_assigned && homs.size() >= 2) {
+        std::uint64_t h = 0x51ed270b27e1f2c3ULL;
+        for (HomId f : homs) {
+            h = hash_combine(h, assign_[s_.hom(f).codom.index()][x_.subpart(f, x)]);
+        }
+        const KeyIndex& k = key_index(ob);
+        auto it = k.ranges.find(h);
+        if (it == k.ranges.end()) {
+            return 0;
+        }
+        std::size_t n = it->second.second - it->second.first;
+        if (n < src.size) {
+            src = Source{k.parts.data() + it->second.first, n};
+        }
+        return src.size;
+    }
+    for (HomId f : homs) {
+        Part xf = x_.subpart(f, x);
+        if (xf == kNoPart) {
+            continue;
+        }
+        Part img = assign_[s_.hom(f).codom.index()][xf];
+        if (img == kNoPart) {
+            continue;
+        }
+        auto inc = y_.incident(f, img);
+        if (inc.size() < src.size) {
+            src = Source{inc.data(), inc.size()};
+        }
+    }
+    return src.size;
+}
+
+bool Engine::search() {
+    // Choose the unassigned part with the fewest candidates (ties: object order, part order).
+    std::size_t best = std::numeric_limits<std::size_t>::max();
+    std::uint32_t best_ob = 0;
+    Part best_x = kNoPart;
+    Source best_src;
+    for (std::uint32_t ob = 0; ob < assign_.size() && best > 0; ++ob) {
+        const auto& a = assign_[ob];
+        for (Part x = 0; x < a.size(); ++x) {
+            if (a[x] != kNoPart) {
+                continue;
+            }
+            Source src;
+            std::size_t n = estimate(ob, x, src);
+            if (n < best) {
+                best = n;
+                best_ob = ob;
+                best_x = x;
+                best_src = src;
+                if (n == 0) {
+                    break;
+                }
+            }
+        }
+    }
+    if (best_x == kNoPart) {
+        return enumerate_floating(0);
+    }
+    for (std::size_t i = 0; i < best_src.size; ++i) {
+        Part y = best_src.data ? best_src.data[i] : static_cast<Part>(i);
+        if (opt_.node_limit != 0 && result_.stats.nodes >= opt_.node_limit) {
+            stopped_ = true;
+            return false;
+        }
+        ++result_.stats.nodes;
+        std::size_t mark = trail_.size();
+        if (assign(best_ob, best_x, y) && !search()) {
+            undo(mark);
+            return false;
+        }
+        undo(mark);
+    }
+    return true;
+}
+
+bool Engine::enumerate_floating(std::size_t i) {
+    if (i == floating_.size()) {
+        return emit();
+    }
+    auto [t, v] = floating_[i];
+    std::size_t n = y_.num_vars(AttrTypeId(t));
+    for (std::uint32_t k = 0; k < n; ++k) {
+        std::size_t mark = trail_.size();
+        if (bind_var(t, v, Value::var(k)) && !enumerate_floating(i + 1)) {
+            undo(mark);
+            return false;
+        }
+        undo(mark);
+    }
+    return true;
+}
+
+bool Engine::emit() {
+    ++result_.count;
+    if (mode_ != SearchMode::Count) {
+        // Reuse the scratch morphism's buffers: no allocation per result in Callback mode.
+        scratch_.components.resize(assign_.size());
+        for (std::size_t ob = 0; ob < assign_.size(); ++ob) {
+            scratch_.components[ob].assign(assign_[ob].begin(), assign_[ob].end());
+        }
+        scratch_.var_components.resize(vbind_.size());
+        for (std::size_t t = 0; t < vbind_.size(); ++t) {
+            scratch_.var_components[t].assign(vbind_[t].begin(), vbind_[t].end());
+        }
+        if (mode_ == SearchMode::Collect) {
+            result_.morphisms.push_back(scratch_);
+        } else if (!(*fn_)(scratch_)) {
+            stopped_ = true;
+            return false;
+        }
+    }
+    if (opt_.max_results != 0 && result_.count >= opt_.max_results) {
+        stopped_ = true;
+        return false;
+    }
+    return true;
+}
+
+bool Engine::prepare() {
+    std::size_t nobs = s_.num_obs(), ntypes = s_.num_attr_types();
+    CATPLAN_ASSERT(&x_.schema() == &y_.schema() ||
+                       (y_.schema().num_obs() == nobs && y_.schema().num_homs() == s_.num_homs() &&
+                        y_.schema().num_attrs() == s_.num_attrs() &&
+                        y_.schema().num_attr_types() == ntypes),
+                   "hom search between states on different schemas");
+    monic_.assign(nobs, opt_.monic_all || opt_.iso ? 1 : 0);
+    for (ObId ob : opt_.monic) {
+        CATPLAN_ASSERT(ob.index() < nobs, "monic: object out of range");
+        monic_[ob.index()] = 1;
+    }
+    std::vector<char> iso_ob(nobs, opt_.iso ? 1 : 0);
+    for (ObId ob : opt_.iso_obs) {
+        CATPLAN_ASSERT(ob.index() < nobs, "iso_obs: object out of range");
+        iso_ob[ob.index()] = 1;
+        monic_[ob.index()] = 1;
+    }
+    monic_t_.assign(ntypes, opt_.iso ? 1 : 0);
+    for (AttrTypeId t : opt_.monic_attr_types) {
+        CATPLAN_ASSERT(t.index() < ntypes, "monic_attr_types: type out of range");
+        monic_t_[t.index()] = 1;
+    }
+    std::vector<char> no_bind(ntypes, 0);
+    for (AttrTypeId t : opt_.no_bind) {
+        CATPLAN_ASSERT(t.index() < ntypes, "no_bind: type out of range");
+        no_bind[t.index()] = 1;
+    }
+
+    // Infinitely many morphisms: report before anything else, as Catlab does.
+    std::vector<std::vector<char>> used(ntypes);
+    for (std::size_t t = 0; t < ntypes; ++t) {
+        used[t].assign(x_.num_vars(AttrTypeId(static_cast<std::uint32_t>(t))), 0);
+    }
+    for (std::uint32_t a = 0; a < s_.num_attrs(); ++a) {
+        std::uint32_t t = s_.attr(AttrId(a)).codom.index();
+        for (const Value& v : x_.column(AttrId(a))) {
+            if (v.is_var()) {
+                used[t][v.var_index()] = 1;
+            }
+        }
+    }
+    for (const VarBinding& b : opt_.initial_vars) {
+        CATPLAN_ASSERT(b.type.index() < ntypes && b.var < used[b.type.index()].size(),
+                       "initial_vars: variable out of range");
+        used[b.type.index()][b.var] = 1;
+    }
+    for (std::uint32_t t = 0; t < ntypes; ++t) {
+        for (std::uint32_t v = 0; v < used[t].size(); ++v) {
+            if (used[t][v]) {
+                continue;
+            }
+            if (!monic_t_[t] && !no_bind[t]) {
+                result_.error = fmt::format(
+                    "infinitely many homomorphisms: variable {} of attribute type {} is used by "
+                    "no attribute, so it can map to any value; bind it with an initial binding, "
+                    "or make {} monic or no_bind",
+                    x_.value_label(AttrTypeId(t), Value::var(v)), s_.attr_type(AttrTypeId(t)).name,
+                    s_.attr_type(AttrTypeId(t)).name);
+                result_.complete = false;
+                return false;
+            }
+            floating_.emplace_back(t, v);
+        }
+    }
+
+    // Cardinality: an injective map needs room, a bijective one equal sizes.
+    for (std::uint32_t ob = 0; ob < nobs; ++ob) {
+        std::size_t nx = x_.num_parts(ObId(ob)), ny = y_.num_parts(ObId(ob));
+        if ((monic_[ob] && nx > ny) || (iso_ob[ob] && nx != ny)) {
+            return false;
+        }
+    }
+    for (std::uint32_t t = 0; t < ntypes; ++t) {
+        std::size_t nx = x_.num_vars(AttrTypeId(t)), ny = y_.num_vars(AttrTypeId(t));
+        if ((monic_t_[t] && nx > ny) || (opt_.iso && nx != ny)) {
+            return false;
+        }
+    }
+
+    assign_.resize(nobs);
+    inv_.resize(nobs);
+    cand_.resize(nobs);
+    has_cand_.assign(nobs, 0);
+    keys_.resize(nobs);
+    std::size_t total = 0;
+    for (std::uint32_t ob = 0; ob < nobs; ++ob) {
+        assign_[ob].assign(x_.num_parts(ObId(ob)), kNoPart);
+        total += assign_[ob].size();
+        if (monic_[ob]) {
+            inv_[ob].assign(y_.num_parts(ObId(ob)), kNoPart);
+        }
+    }
+    vbind_.resize(ntypes);
+    vused_.resize(ntypes);
+    for (std::uint32_t t = 0; t < ntypes; ++t) {
+        vbind_[t].assign(x_.num_vars(AttrTypeId(t)), Value());
+        total += vbind_[t].size();
+        if (monic_t_[t]) {
+            vused_[t].assign(y_.num_vars(AttrTypeId(t)), 0);
+        }
+    }
+    trail_.reserve(total);
+
+    bool empty_candidates = false;
+    for (const CandidateSet& c : opt_.candidates) {
+        std::uint32_t ob = c.ob.index();
+        CATPLAN_ASSERT(ob < nobs && c.dom < x_.num_parts(c.ob), "candidates: part out of range");
+        std::vector<Part> allowed = c.allowed;
+        std::sort(allowed.begin(), allowed.end());
+        allowed.erase(std::unique(allowed.begin(), allowed.end()), allowed.end());
+        std::erase_if(allowed, [&](Part p) { return p >= y_.num_parts(c.ob); });
+        if (cand_[ob].empty()) {
+            cand_[ob].resize(x_.num_parts(c.ob));
+        }
+        auto& slot = cand_[ob][c.dom];
+        if (has_cand_[ob] && !slot.empty()) {
+            std::vector<Part> both;
+            std::set_intersection(slot.begin(), slot.end(), allowed.begin(), allowed.end(),
+                                  std::back_inserter(both));
+            allowed = std::move(both);
+        }
+        has_cand_[ob] = 1;
+        // An empty slot means "no restriction" in the engine, so an empty set ends the search.
+        if (allowed.empty()) {
+            empty_candidates = true;
+        }
+        slot = std::move(allowed);
+    }
+    if (empty_candidates) {
+        return false;
+    }
+
+    for (const VarBinding& b : opt_.initial_vars) {
+        CATPLAN_ASSERT(!b.value.is_var() || b.value.var_index() < y_.num_vars(b.type),
+                       "initial_vars: codomain variable out of range");
+        if (!bind_var(b.type.index(), b.var, b.value)) {
+            return false;
+        }
+    }
+    for (const PartBinding& b : opt_.initial) {
+        CATPLAN_ASSERT(b.ob.index() < nobs && b.dom < x_.num_parts(b.ob) &&
+                           b.codom < y_.num_parts(b.ob),
+                       "initial: part out of range");
+        if (!assign(b.ob.index(), b.dom, b.codom)) {
+            return false;
+        }
+    }
+    return true;
+}
+
+HomSearchResult Engine::run() {
+    if (prepare()) {
+        search();
+    }
+    if (stopped_) {
+        result_.complete = false;
+    }
+    return std::move(result_);
+}
+
+} // namespace
+
+HomSearchResult run_search(const ACSet& x, const ACSet& y, const HomSearchOptions& options,
+                           SearchMode mode, const std::function<bool(const ACSetMorphism&)>* fn) {
+    Engine engine(x, y, options, mode, fn);
+    return engine.run();
+}
+
+} // namespace catplan::hom::detail
