@@ -1,0 +1,58 @@
+#pragma once
+// Catlab's ACSet JSON (ACSets.jl `JSONACSets`), for states and for schemas, both directions.
+//
+// A state is one JSON object: a key per object of the schema (schema order) holding one row per
+// part, then a key per attribute type holding one {"_id": j} per attribute variable. A row is
+// "_id" (1-based), then the object's homs (1-based target ids, 0 when unset), then its attributes
+// (a JSON value, {"_var": j} for variable j, null when unset):
+//
+//   {"V":[{"_id":1},{"_id":2}],"E":[{"_id":1,"src":1,"tgt":2}]}
+//
+// A schema is {"version": ..., "Ob": [{"name"}], "Hom": [{"name","dom","codom"}], "AttrType":
+// [{"name"}], "Attr": [{"name","dom","codom"}], "equations": [{"dom","codom","name","paths"}]}.
+// The format carries no value kinds: reading a state infers the kind of an Unknown attribute type
+// from its values (see read_acset).
+//
+// Readers report every problem as a located Diagnostic (the text must be registered in the
+// SourceManager); writers cannot fail.
+//
+//   SourceManager sources;
+//   DiagnosticSink sink(sources);
+//   auto file = sources.add_buffer("g.json", text);
+//   if (auto g = json::read_acset(graph_schema, file, sources, sink)) { ... json::write_acset(*g) }
+
+#include "catplan/acset/acset.hpp"
+#include "catplan/base/diagnostic.hpp"
+#include "catplan/base/source.hpp"
+#include "catplan/schema/schema.hpp"
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace catplan::json {
+
+/// Catlab ACSet JSON of a state (compact unless pretty); floats in shortest round-trip form,
+/// non-finite floats as null; part and variable names are not part of the format.
+std::string write_acset(const acset::ACSet& x, bool pretty = false);
+
+/// Catlab schema JSON (kinds of attribute types are not part of the format).
+std::string write_schema(const schema::Schema& s, bool pretty = false);
+
+/// Reads a state on `schema` from JSON text registered as file `file` in `sources`; nullopt on
+/// errors (all reported to sink). An attribute type of kind Unknown takes the kind of its first
+/// concrete value (Int widened to Float when a float appears too); the returned state is then on
+/// an adjusted copy of the schema. JSON integers are accepted for Float attributes.
+std::optional<acset::ACSet> read_acset(schema::SchemaPtr schema, std::uint32_t file,
+                                       const SourceManager& sources, DiagnosticSink& sink);
+
+/// Reads a schema (named `name`) from JSON text registered as `file`; nullptr on errors (all
+/// reported to sink). Accepts the older "domain"/"codomain" keys and a missing "equations".
+schema::SchemaPtr read_schema(std::string name, std::uint32_t file, const SourceManager& sources,
+                              DiagnosticSink& sink);
+
+/// Whether JSON text looks like a schema (has "Ob" and "Hom" arrays) rather than an instance.
+bool looks_like_schema(std::string_view text);
+
+} // namespace catplan::json
