@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
+#include <random>
 
 namespace catplan::json {
 namespace {
@@ -671,6 +672,75 @@ TEST(JsonErrors, SchemaEquationPathsMustCompose) {
     EXPECT_NE(errors.find("error: this path ends at 'V', but the equation's codomain is 'E'"),
               std::string::npos)
         << errors;
+}
+
+TEST(JsonErrors, EdgeCasesOfTheInputAreLocated) {
+    Graph g;
+    EXPECT_EQ(acset_errors(g.s, ""),
+              "x.json:1:1: error: invalid JSON: syntax error while parsing value - unexpected end "
+              "of input; expected '[', '{', or a literal\n"
+              "    1 | \n"
+              "      | ^\n");
+    EXPECT_EQ(acset_errors(g.s, R"({"V":[],"E":[{"_id":1e999}]})").substr(0, 60),
+              "x.json:1:25: error: invalid JSON: number overflow parsing '1");
+    // A byte-order mark is skipped, as by nlohmann.
+    EXPECT_TRUE(read(g.s, "\xEF\xBB\xBF{\"V\":[],\"E\":[]}").has_value());
+    // Invalid UTF-8 inside a string is a syntax error, not an exception.
+    EXPECT_NE(acset_errors(g.s, "{\"V\":[],\"E\":[],\"\xFF\":[]}").find("x.json:1:"),
+              std::string::npos);
+}
+
+// Mutated documents never crash the reader, never yield a state together with errors, and
+// every diagnostic is located.
+TEST(JsonErrors, MutatedDocumentsGiveLocatedDiagnosticsOnly) {
+    ColorBlocksworld c(false);
+    LabeledDDS d;
+    const std::string alphabet = "{}[],:\"0123456789-.eEtrufalsn_ \\";
+
+    struct Case {
+        SchemaPtr schema;
+        std::string text;
+    };
+
+    const std::vector<Case> cases = {{c.s, kColorBlocksJson}, {d.s, kLabeledDDSJson}};
+    for (std::uint32_t seed = 0; seed < 300; ++seed) {
+        SCOPED_TRACE(seed);
+        std::mt19937 rng(seed);
+        const Case& base = cases[seed % cases.size()];
+        std::string text = base.text;
+        int edits = 1 + static_cast<int>(rng() % 3);
+        for (int i = 0; i < edits && !text.empty(); ++i) {
+            std::size_t at = rng() % text.size();
+            char ch = alphabet[rng() % alphabet.size()];
+            switch (rng() % 3) {
+            case 0:
+                text.erase(at, 1);
+                break;
+            case 1:
+                text.insert(at, 1, ch);
+                break;
+            default:
+                text[at] = ch;
+                break;
+            }
+        }
+        SourceManager sources;
+        DiagnosticSink sink(sources);
+        auto file = sources.add_buffer("m.json", text);
+        auto x = read_acset(base.schema, file, sources, sink);
+        EXPECT_EQ(x.has_value(), !sink.has_errors()) << text << "\n" << sink.render();
+        for (const auto& diag : sink.diagnostics()) {
+            EXPECT_TRUE(diag.range.valid()) << diag.message;
+            EXPECT_LE(diag.range.begin, text.size());
+        }
+        if (x) { // whatever was accepted writes back to a document that reads the same
+            auto again = read(x->schema_ptr(), write_acset(*x));
+            ASSERT_TRUE(again.has_value());
+            EXPECT_EQ(*again, *x);
+        }
+        auto s = read_schema("M", file, sources, sink); // not a schema: must fail cleanly
+        EXPECT_EQ(s, nullptr);
+    }
 }
 
 } // namespace
