@@ -148,8 +148,8 @@ private:
     }
 
     void import(const MacroCall& form, std::uint32_t file) {
-        if (form.header.size() != 1 || form.header[0].kind != Expr::Kind::String ||
-            form.has_body || !form.assigned.empty()) {
+        if (form.header.size() != 1 || form.header[0].kind != Expr::Kind::String || form.has_body ||
+            !form.assigned.empty()) {
             sink_.error(form.range, "expected @import \"path/to/file.cp\"");
             return;
         }
@@ -210,13 +210,23 @@ private:
                                         form.name));
             }
         }
+
         struct Pending {
             const MacroCall* form;
             std::string name;
             SourceRange name_range;
             std::shared_ptr<Schema> schema;
         };
+
         std::vector<Pending> pending;
+        file_instances_.clear();
+        for (const auto* form : instances) {
+            if (!form->assigned.empty()) {
+                file_instances_.insert(form->assigned);
+            } else if (form->header.size() == 1 && form->header[0].kind == Expr::Kind::Call) {
+                file_instances_.insert(form->header[0].text);
+            }
+        }
         for (const auto* form : instances) {
             Pending p{form, {}, {}, nullptr};
             if (resolve_instance_header(*form, p.name, p.name_range, p.schema)) {
@@ -266,7 +276,7 @@ private:
         if (it != schemas_.end()) {
             return it->second;
         }
-        if (module_.find(name) != nullptr) {
+        if (module_.find(name) != nullptr || file_instances_.count(name)) {
             sink_.error(name_expr.range, fmt::format("'{}' is an instance, not a schema", name));
         } else {
             sink_.error(name_expr.range, fmt::format("unknown schema '{}'", name));
@@ -284,9 +294,9 @@ private:
                 h.args[0].kind == Expr::Kind::Name) {
                 name = &h;
                 if (h.args[0].text != "FreeSchema") {
-                    sink_.error(h.args[0].range,
-                                fmt::format("unknown theory '{}' (expected FreeSchema)",
-                                            h.args[0].text));
+                    sink_.error(
+                        h.args[0].range,
+                        fmt::format("unknown theory '{}' (expected FreeSchema)", h.args[0].text));
                     ok = false;
                 }
             } else if (h.is_binary("<:") && h.args[0].kind == Expr::Kind::Name) {
@@ -308,8 +318,7 @@ private:
                                     "'@present Name <: Base begin ... end'");
             return;
         }
-        SourceRange name_range =
-            name->kind == Expr::Kind::Call ? name->name_range : name->range;
+        SourceRange name_range = name->kind == Expr::Kind::Call ? name->name_range : name->range;
         auto s = std::make_shared<Schema>(name->text);
         for (const Expr* b : bases) {
             if (b->kind != Expr::Kind::Name) {
@@ -393,8 +402,8 @@ private:
                 continue;
             }
             if (!clash(a.name)) {
-                s.add_attr(a.name, ob_of(a.dom),
-                           *s.find_attr_type(base.attr_type(a.codom).name), a.range);
+                s.add_attr(a.name, ob_of(a.dom), *s.find_attr_type(base.attr_type(a.codom).name),
+                           a.range);
             }
         }
         for (const auto& eq : base.equations()) {
@@ -427,8 +436,8 @@ private:
                 return x;
             }
             if (auto g = s.find(e.text)) {
-                sink_.error(e.range, fmt::format("'{}' is {}, not an object", e.text,
-                                                 kind_noun(g->kind)));
+                sink_.error(e.range,
+                            fmt::format("'{}' is {}, not an object", e.text, kind_noun(g->kind)));
                 return std::nullopt;
             }
         }
@@ -628,7 +637,8 @@ private:
         s.add_equation({"", std::move(*lhs), std::move(*rhs), st.range});
     }
 
-    // ---- instances: headers and kinds ------------------------------------------------------------
+    // ---- instances: headers and kinds
+    // ------------------------------------------------------------
 
     bool resolve_instance_header(const MacroCall& form, std::string& name, SourceRange& range,
                                  std::shared_ptr<Schema>& schema) {
@@ -647,10 +657,9 @@ private:
             schema_name = &form.header[0].args[0];
         }
         if (schema_name == nullptr || !form.has_body) {
-            sink_.error(form.range,
-                        fmt::format("expected '@{0} Name(Schema) begin ... end' or "
-                                    "'Name = @{0} Schema begin ... end'",
-                                    form.name));
+            sink_.error(form.range, fmt::format("expected '@{0} Name(Schema) begin ... end' or "
+                                                "'Name = @{0} Schema begin ... end'",
+                                                form.name));
             return false;
         }
         schema = lookup_schema(*schema_name, true);
@@ -776,9 +785,9 @@ private:
         if (sit != inferred_.end()) {
             auto it = sit->second.find(t.index());
             if (it != sit->second.end()) {
-                d.notes.emplace_back(it->second.range,
-                                     fmt::format("the kind of '{}' was inferred from this literal",
-                                                 info.name));
+                d.notes.emplace_back(
+                    it->second.range,
+                    fmt::format("the kind of '{}' was inferred from this literal", info.name));
                 return std::nullopt;
             }
         }
@@ -795,11 +804,13 @@ private:
         std::vector<std::uint32_t> homs;  // by position in homs_from(ob); kNone if undefined
         std::vector<std::uint32_t> attrs; // value nodes, by position in attrs_from(ob)
     };
+
     struct ValueNode {
         AttrTypeId type;
         std::optional<Value> literal;
         SourceRange literal_range;
     };
+
     static constexpr std::uint32_t kNone = UINT32_MAX;
 
     struct Term {
@@ -855,8 +866,8 @@ private:
             for (const Expr* n : names) {
                 auto it = gens_.find(n->text);
                 if (it != gens_.end()) {
-                    auto& d = l_.sink_.error(n->range,
-                                             fmt::format("duplicate generator '{}'", n->text));
+                    auto& d =
+                        l_.sink_.error(n->range, fmt::format("duplicate generator '{}'", n->text));
                     d.notes.emplace_back(it->second.range, "first declared here");
                     continue;
                 }
@@ -889,8 +900,8 @@ private:
                     return std::nullopt;
                 }
                 Term t = it->second.term;
-                t.node = t.kind == Term::Kind::Part ? parts_uf_.find(t.node)
-                                                    : values_uf_.find(t.node);
+                t.node =
+                    t.kind == Term::Kind::Part ? parts_uf_.find(t.node) : values_uf_.find(t.node);
                 return t;
             }
             if (e.kind != Expr::Kind::Call) {
@@ -921,8 +932,7 @@ private:
             if (arg->kind != Term::Kind::Part || parts_[arg->node].ob != dom) {
                 l_.sink_.error(e.args[0].range,
                                fmt::format("'{}' expects a part of {}, but '{}' is {}", e.text,
-                                           s_.ob(dom).name, to_string(e.args[0]),
-                                           describe(*arg)));
+                                           s_.ob(dom).name, to_string(e.args[0]), describe(*arg)));
                 return std::nullopt;
             }
             std::uint32_t p = arg->node;
@@ -1105,9 +1115,8 @@ private:
             std::vector<Value> value_of(values_.size());
             for (std::uint32_t v = 0; v < values_.size(); ++v) {
                 if (values_uf_.find(v) == v) {
-                    value_of[v] = values_[v].literal
-                                      ? *values_[v].literal
-                                      : x.add_var(values_[v].type, value_names_[v]);
+                    value_of[v] = values_[v].literal ? *values_[v].literal
+                                                     : x.add_var(values_[v].type, value_names_[v]);
                 }
             }
             for (std::uint32_t p = 0; p < parts_.size(); ++p) {
@@ -1117,8 +1126,7 @@ private:
                 ObId ob = parts_[p].ob;
                 auto homs = s_.homs_from(ob);
                 for (std::size_t i = 0; i < homs.size(); ++i) {
-                    x.set_subpart(homs[i], part_of[p],
-                                  part_of[parts_uf_.find(parts_[p].homs[i])]);
+                    x.set_subpart(homs[i], part_of[p], part_of[parts_uf_.find(parts_[p].homs[i])]);
                 }
                 auto attrs = s_.attrs_from(ob);
                 for (std::size_t i = 0; i < attrs.size(); ++i) {
@@ -1134,6 +1142,7 @@ private:
             Term term;
             SourceRange range;
         };
+
         Loader& l_;
         const Schema& s_;
         std::unordered_map<std::uint32_t, std::uint32_t> hom_slot_, attr_slot_;
@@ -1174,7 +1183,8 @@ private:
         return c.build(s);
     }
 
-    // ---- instances: literal tables (@acset) ------------------------------------------------------
+    // ---- instances: literal tables (@acset)
+    // ------------------------------------------------------
 
     std::optional<ACSet> build_literal(const MacroCall& form, const std::shared_ptr<Schema>& s) {
         std::size_t errors = sink_.num_errors();
@@ -1233,11 +1243,11 @@ private:
                     items.push_back(&item);
                 }
                 if (items.size() != n) {
-                    sink_.error(rhs.range, fmt::format("column '{}' has {} value{} but {} has {} "
-                                                       "part{}",
-                                                       lhs.text, items.size(),
-                                                       items.size() == 1 ? "" : "s",
-                                                       s->ob(dom).name, n, n == 1 ? "" : "s"));
+                    sink_.error(rhs.range,
+                                fmt::format("column '{}' has {} value{} but {} has {} "
+                                            "part{}",
+                                            lhs.text, items.size(), items.size() == 1 ? "" : "s",
+                                            s->ob(dom).name, n, n == 1 ? "" : "s"));
                     continue;
                 }
             } else {
@@ -1279,8 +1289,9 @@ private:
                         }
                         continue;
                     }
-                    x.set_subpart(*attr, p,
-                                  Value::var(static_cast<std::uint32_t>(item.args[0].int_value - 1)));
+                    x.set_subpart(
+                        *attr, p,
+                        Value::var(static_cast<std::uint32_t>(item.args[0].int_value - 1)));
                     continue;
                 }
                 if (!is_literal(item)) {
@@ -1315,6 +1326,7 @@ private:
     std::unordered_map<std::string, std::shared_ptr<Schema>> schemas_;
     std::set<const Schema*> local_schemas_;
     std::set<const Schema*> broken_;
+    std::set<std::string> file_instances_;
     std::map<Schema*, std::map<std::uint32_t, Inferred>> inferred_;
 };
 
@@ -1327,8 +1339,8 @@ Module load_file(const std::string& path, SourceManager& sources, DiagnosticSink
     return loader.take();
 }
 
-Module load_source(std::string name, std::string text, SourceManager& sources,
-                   DiagnosticSink& sink, const LoadOptions& options) {
+Module load_source(std::string name, std::string text, SourceManager& sources, DiagnosticSink& sink,
+                   const LoadOptions& options) {
     Loader loader(sources, sink, options);
     loader.load_root_source(sources.add_buffer(std::move(name), std::move(text)));
     return loader.take();

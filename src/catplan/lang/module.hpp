@@ -43,6 +43,7 @@ class Module {
 public:
     /// Every declaration that elaborated without error, in load order, imports first.
     const std::vector<Declaration>& declarations() const { return decls_; }
+
     /// The declaration with this name, or nullptr.
     const Declaration* find(std::string_view name) const;
     /// Appends a declaration; its name must be new (asserted: the loader reports duplicates).
@@ -63,11 +64,12 @@ struct LoadOptions {
 Module load_file(const std::string& path, SourceManager& sources, DiagnosticSink& sink,
                  const LoadOptions& options = {});
 /// Like load_file for text in memory; `name` is the display name and anchors relative imports.
-Module load_source(std::string name, std::string text, SourceManager& sources,
-                   DiagnosticSink& sink, const LoadOptions& options = {});
+Module load_source(std::string name, std::string text, SourceManager& sources, DiagnosticSink& sink,
+                   const LoadOptions& options = {});
 
 /// One line: "schema Kitchenworld: 10 objects, 13 homs, 3 attribute types, 15 attributes" /
-/// "instance Initial (ColorBlocksworld): 11 parts (Block 7, Empty 1, Gripper 1, On 2), 3 variables".
+/// "instance Initial (ColorBlocksworld): 11 parts (Block 7, Empty 1, Gripper 1, On 2), 3
+/// variables".
 std::string summarize(const Declaration& d);
 
 /// The schema in @present form, loadable again to an equal schema.

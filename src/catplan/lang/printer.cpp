@@ -41,10 +41,10 @@ std::string path_term(const Schema& s, const Path& p) {
 std::string summarize(const Declaration& d) {
     if (d.kind == DeclKind::Schema) {
         const Schema& s = *d.schema;
-        std::string out = fmt::format("schema {}: {}, {}, {}, {}", d.name,
-                                      plural(s.num_obs(), "object"), plural(s.num_homs(), "hom"),
-                                      plural(s.num_attr_types(), "attribute type"),
-                                      plural(s.num_attrs(), "attribute"));
+        std::string out =
+            fmt::format("schema {}: {}, {}, {}, {}", d.name, plural(s.num_obs(), "object"),
+                        plural(s.num_homs(), "hom"), plural(s.num_attr_types(), "attribute type"),
+                        plural(s.num_attrs(), "attribute"));
         if (!s.equations().empty()) {
             out += ", " + plural(s.equations().size(), "equation");
         }
@@ -62,8 +62,8 @@ std::string summarize(const Declaration& d) {
     for (std::uint32_t t = 0; t < s.num_attr_types(); ++t) {
         vars += x.num_vars(AttrTypeId(t));
     }
-    std::string out = fmt::format("instance {} ({}): {}", d.name, s.name(),
-                                  plural(x.total_parts(), "part"));
+    std::string out =
+        fmt::format("instance {} ({}): {}", d.name, s.name(), plural(x.total_parts(), "part"));
     if (!counts.empty()) {
         out += fmt::format(" ({})", fmt::join(counts, ", "));
     }
@@ -117,16 +117,16 @@ std::string print_instance(const ACSet& x, std::string_view name) {
     std::vector<std::vector<std::string>> part_names(s.num_obs());
     for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
         for (Part p = 0; p < x.num_parts(ObId(o)); ++p) {
-            part_names[o].push_back(pick(x.part_name(ObId(o), p),
-                                         fmt::format("_{}{}", s.ob(ObId(o)).name, p + 1)));
+            part_names[o].push_back(
+                pick(x.part_name(ObId(o), p), fmt::format("_{}{}", s.ob(ObId(o)).name, p + 1)));
         }
     }
     std::vector<std::vector<std::string>> var_names(s.num_attr_types());
     for (std::uint32_t t = 0; t < s.num_attr_types(); ++t) {
         for (std::uint32_t j = 0; j < x.num_vars(AttrTypeId(t)); ++j) {
-            var_names[t].push_back(pick(x.var_name(AttrTypeId(t), j),
-                                        fmt::format("_{}{}", s.attr_type(AttrTypeId(t)).name,
-                                                    j + 1)));
+            var_names[t].push_back(
+                pick(x.var_name(AttrTypeId(t), j),
+                     fmt::format("_{}{}", s.attr_type(AttrTypeId(t)).name, j + 1)));
         }
     }
     std::string out = fmt::format("@acset_colim {}({}) begin\n", name, s.name());

@@ -9,15 +9,20 @@
 namespace catplan::lang {
 namespace {
 
-bool is_ident_start(unsigned char c) { return std::isalpha(c) || c == '_' || c >= 0x80; }
+bool is_ident_start(unsigned char c) {
+    return std::isalpha(c) || c == '_' || c >= 0x80;
+}
 
-bool is_ident_char(unsigned char c) { return is_ident_start(c) || std::isdigit(c); }
+bool is_ident_char(unsigned char c) {
+    return is_ident_start(c) || std::isdigit(c);
+}
 
 // The multi-byte operators that must not be taken for identifier characters.
 struct Utf8Op {
     std::string_view bytes;
     std::string_view punct;
 };
+
 constexpr Utf8Op kUtf8Ops[] = {{"⋅", "."}, {"·", "."}, {"→", "->"}, {"∘", "∘"}};
 
 const Utf8Op* utf8_op_at(std::string_view text, std::size_t i) {
@@ -147,8 +152,8 @@ private:
         std::size_t b = i_;
         bool is_float = false;
         auto digits = [&] {
-            while (i_ < text_.size() && (std::isdigit(static_cast<unsigned char>(text_[i_])) ||
-                                         text_[i_] == '_')) {
+            while (i_ < text_.size() &&
+                   (std::isdigit(static_cast<unsigned char>(text_[i_])) || text_[i_] == '_')) {
                 ++i_;
             }
         };
@@ -182,8 +187,7 @@ private:
             while (e < text_.size() && is_ident_char(static_cast<unsigned char>(text_[e]))) {
                 ++e;
             }
-            sink_.error(range(b, e),
-                        fmt::format("malformed number '{}'", text_.substr(b, e - b)));
+            sink_.error(range(b, e), fmt::format("malformed number '{}'", text_.substr(b, e - b)));
             i_ = e;
             return;
         }
@@ -237,6 +241,8 @@ private:
         }
         if (i_ >= text_.size() || text_[i_] != '"') {
             sink_.error(range(b, b + 1), "unterminated string");
+            // Keep the token so the statement still parses and the error does not cascade.
+            push(TokenKind::String, b, i_, std::move(out));
             return;
         }
         ++i_;
@@ -377,8 +383,8 @@ private:
             return m;
         }
         if (t.kind != TokenKind::At) {
-            fail_at(t, fmt::format("expected a declaration starting with '@', found {}",
-                                   describe(t)));
+            fail_at(t,
+                    fmt::format("expected a declaration starting with '@', found {}", describe(t)));
         }
         return macro_call();
     }
@@ -663,8 +669,8 @@ std::string to_string(const Expr& e) {
         return fmt::format("[{}]", join(e.args));
     case Expr::Kind::Binary:
         if (e.text == "::" || e.text == ".") {
-            return fmt::format("{}{}{}", to_string(e.args[0]), e.text == "." ? "⋅" : "::",
-                               to_string(e.args[1]));
+            return fmt::format("{}{}{}", to_string(e.args[0]),
+                               e.text == "." ? "⋅" : "::", to_string(e.args[1]));
         }
         return fmt::format("{} {} {}", to_string(e.args[0]), e.text, to_string(e.args[1]));
     case Expr::Kind::Macro:

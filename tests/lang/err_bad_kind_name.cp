@@ -1,0 +1,4 @@
+@present S(FreeSchema) begin
+  A::Ob
+  T::AttrType(Colour)
+end

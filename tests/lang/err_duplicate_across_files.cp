@@ -1,0 +1,5 @@
+@import "shared_imported.cp"
+
+@present Shared(FreeSchema) begin
+  A::Ob
+end

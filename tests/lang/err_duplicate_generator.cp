@@ -1,0 +1,5 @@
+@present S(FreeSchema) begin
+  A::Ob
+  B::Ob
+  A::Ob
+end

@@ -1,0 +1,5 @@
+@import "no_such_file.cp"
+
+@present S(FreeSchema) begin
+  A::Ob
+end

@@ -1,0 +1,14 @@
+@present Graph(FreeSchema) begin
+  (V, E)::Ob
+  (src, tgt)::Hom(E, V)
+  Weight::AttrType
+  weight::Attr(E, Weight)
+end
+
+@acset_colim I(Graph) begin
+  v::V
+end
+
+@acset_colim J(I) begin
+  v::V
+end

@@ -1,0 +1,5 @@
+@present S(FreeSchema) begin
+  A::Ob
+  f::Hom(A, A) extra
+  g::Hom(A A)
+end

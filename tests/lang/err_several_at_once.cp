@@ -1,0 +1,18 @@
+@present Blocks(FreeSchema) begin
+  (Block, Gripper, On)::Ob
+  isHolding::Hom(Gripper, Block)
+  (on_l, on_r)::Hom(On, Block)
+  Color::AttrType
+  Clear::AttrType(Bool)
+  hasColor::Attr(Block, Color)
+  isClear::Attr(Block, Clear)
+end
+
+@acset_colim I(Blocks) begin
+  (A, B)::Block
+  on_l(x) == A
+  hasColor(A) == true
+  hasColor(B) == "red"
+  isClear(A) == 1
+  A == B == C
+end

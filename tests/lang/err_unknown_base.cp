@@ -1,0 +1,3 @@
+@present Sub <: Base begin
+  A::Ob
+end

@@ -1,0 +1,10 @@
+@present Graph(FreeSchema) begin
+  (V, E)::Ob
+  (src, tgt)::Hom(E, V)
+  Weight::AttrType
+  weight::Attr(E, Weight)
+end
+
+@rule swap(Graph) begin
+  e::E
+end

@@ -1,0 +1,4 @@
+@present S(FreeSchema) begin
+  A::Ob
+  f::Hom(A, Thing)
+end

@@ -1,0 +1,3 @@
+@acset_colim I(Grahp) begin
+  v::V
+end

@@ -1,0 +1,3 @@
+@present Shared(FreeSchema) begin
+  X::Ob
+end
