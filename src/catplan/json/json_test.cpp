@@ -240,17 +240,12 @@ TEST(AcsetJson, ColorBlocksworldExampleRoundTrips) {
 // ---- values ---------------------------------------------------------------------------------
 
 struct Weighted {
-    explicit Weighted(ValueKind kind) {
-        w = s->add_attr("w", x, t);
-        t_kind = kind;
-        s->set_kind(t, kind);
-    }
+    explicit Weighted(ValueKind kind) { s->set_kind(t, kind); }
 
     std::shared_ptr<Schema> s = std::make_shared<Schema>("Weighted");
     ObId x = s->add_ob("X");
     AttrTypeId t = s->add_attr_type("W");
-    AttrId w;
-    ValueKind t_kind;
+    AttrId w = s->add_attr("w", x, t);
 };
 
 TEST(AcsetJson, FloatsReadBackExactly) {
