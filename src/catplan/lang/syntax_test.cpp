@@ -1,1 +1,170 @@
+#include "catplan/lang/syntax.hpp"
+
 #include <gtest/gtest.h>
+
+namespace catplan::lang {
+namespace {
+
+struct Lexed {
+    SourceManager sources;
+    DiagnosticSink sink{sources};
+    std::vector<Token> tokens;
+
+    explicit Lexed(std::string text) {
+        tokens = lex(sources, sources.add_buffer("t.cp", std::move(text)), sink);
+    }
+
+    std::vector<std::string> texts() const {
+        std::vector<std::string> out;
+        for (const auto& t : tokens) {
+            if (t.kind != TokenKind::Newline && t.kind != TokenKind::Eof) {
+                out.push_back(t.text);
+            }
+        }
+        return out;
+    }
+};
+
+TEST(Lexer, SplitsOperatorsAndNormalisesUnicode) {
+    Lexed l("f::Hom(A,B) == g ⋅ h · k . m <: => -> → ; @x");
+    EXPECT_FALSE(l.sink.has_errors());
+    EXPECT_EQ(l.texts(), (std::vector<std::string>{"f", "::", "Hom", "(", "A", ",", "B", ")", "==",
+                                                   "g", ".", "h", ".", "k", ".", "m", "<:", "=>",
+                                                   "->", "->", ";", "@", "x"}));
+}
+
+TEST(Lexer, ReadsNumbersOfBothKinds) {
+    Lexed l("0 0.0 42 1e3 2.5E-1 1_000");
+    ASSERT_FALSE(l.sink.has_errors());
+    EXPECT_EQ(l.tokens[0].kind, TokenKind::Int);
+    EXPECT_EQ(l.tokens[1].kind, TokenKind::Float);
+    EXPECT_DOUBLE_EQ(l.tokens[1].float_value, 0.0);
+    EXPECT_EQ(l.tokens[2].int_value, 42);
+    EXPECT_EQ(l.tokens[3].kind, TokenKind::Float);
+    EXPECT_DOUBLE_EQ(l.tokens[3].float_value, 1000.0);
+    EXPECT_DOUBLE_EQ(l.tokens[4].float_value, 0.25);
+    EXPECT_EQ(l.tokens[5].int_value, 1000);
+}
+
+TEST(Lexer, DecodesStringEscapes) {
+    Lexed l(R"("a\"b\\c\nd" "→")");
+    ASSERT_FALSE(l.sink.has_errors());
+    EXPECT_EQ(l.tokens[0].text, "a\"b\\c\nd");
+    EXPECT_EQ(l.tokens[1].text, "→");
+}
+
+TEST(Lexer, SkipsLineAndNestedBlockComments) {
+    Lexed l("a # comment\n#= outer #= inner =# still =# b");
+    EXPECT_FALSE(l.sink.has_errors());
+    EXPECT_EQ(l.texts(), (std::vector<std::string>{"a", "b"}));
+}
+
+TEST(Lexer, AcceptsUnicodeIdentifiers) {
+    Lexed l("dü_2 Größe");
+    EXPECT_FALSE(l.sink.has_errors());
+    EXPECT_EQ(l.texts(), (std::vector<std::string>{"dü_2", "Größe"}));
+}
+
+TEST(Lexer, ReportsBadInputWithLocations) {
+    Lexed l("a $ \"open\n#= never closed");
+    EXPECT_EQ(l.sink.num_errors(), 3u);
+    auto text = l.sink.render();
+    EXPECT_NE(text.find("t.cp:1:3: error: unexpected character '$'"), std::string::npos);
+    EXPECT_NE(text.find("t.cp:1:5: error: unterminated string"), std::string::npos);
+    EXPECT_NE(text.find("t.cp:2:1: error: unterminated block comment"), std::string::npos);
+}
+
+struct Parsed {
+    SourceManager sources;
+    DiagnosticSink sink{sources};
+    ParsedFile file;
+
+    explicit Parsed(std::string text) {
+        file = parse(sources, sources.add_buffer("t.cp", std::move(text)), sink);
+    }
+};
+
+TEST(Parser, ReadsMacroCallsWithHeaderAndBody) {
+    Parsed p("@present S(FreeSchema) begin\n  (A, B)::Ob\n  f::Hom(\n    A, B)\n"
+             "  compose(f, g) == h; f ⋅ g == h\nend\n");
+    ASSERT_FALSE(p.sink.has_errors()) << p.sink.render();
+    ASSERT_EQ(p.file.forms.size(), 1u);
+    const auto& m = p.file.forms[0];
+    EXPECT_EQ(m.name, "present");
+    ASSERT_EQ(m.header.size(), 1u);
+    EXPECT_EQ(to_string(m.header[0]), "S(FreeSchema)");
+    ASSERT_EQ(m.body.size(), 4u);
+    EXPECT_EQ(to_string(m.body[0]), "(A, B)::Ob");
+    EXPECT_EQ(to_string(m.body[1]), "f::Hom(A, B)");
+    EXPECT_EQ(to_string(m.body[2]), "compose(f, g) == h");
+    EXPECT_EQ(to_string(m.body[3]), "f⋅g == h");
+    EXPECT_TRUE(m.body[3].is_binary("=="));
+    EXPECT_TRUE(m.body[3].args[0].is_binary("."));
+}
+
+TEST(Parser, ReadsAssignedMacrosAndLiterals) {
+    Parsed p("X = @acset_colim yS begin\n  a(x) == -1.5; b(x) == true\n  v = [1, 0, AttrVar(2)]\n"
+             "end\n@import \"other.cp\"\n");
+    ASSERT_FALSE(p.sink.has_errors()) << p.sink.render();
+    ASSERT_EQ(p.file.forms.size(), 2u);
+    const auto& m = p.file.forms[0];
+    EXPECT_EQ(m.assigned, "X");
+    EXPECT_EQ(m.name, "acset_colim");
+    EXPECT_EQ(to_string(m.header[0]), "yS");
+    EXPECT_EQ(m.body[0].args[1].kind, Expr::Kind::Float);
+    EXPECT_DOUBLE_EQ(m.body[0].args[1].float_value, -1.5);
+    EXPECT_EQ(m.body[1].args[1].kind, Expr::Kind::Bool);
+    EXPECT_EQ(to_string(m.body[2]), "v = [1, 0, AttrVar(2)]");
+    EXPECT_EQ(p.file.forms[1].name, "import");
+    EXPECT_FALSE(p.file.forms[1].has_body);
+    EXPECT_EQ(p.file.forms[1].header[0].text, "other.cp");
+}
+
+TEST(Parser, NestsMacrosForLaterDeclarationKinds) {
+    Parsed p("@rule unstack begin\n  Pre => @join begin\n    x::Block\n  end\nend\n");
+    ASSERT_FALSE(p.sink.has_errors()) << p.sink.render();
+    const auto& body = p.file.forms[0].body;
+    ASSERT_EQ(body.size(), 1u);
+    ASSERT_TRUE(body[0].is_binary("=>"));
+    ASSERT_EQ(body[0].args[1].kind, Expr::Kind::Macro);
+    EXPECT_EQ(body[0].args[1].macro->name, "join");
+    EXPECT_EQ(body[0].args[1].macro->body.size(), 1u);
+}
+
+TEST(Parser, RangesCoverTheirText) {
+    Parsed p("@present S(FreeSchema) begin\n  f::Hom(A, B)\nend\n");
+    const auto& st = p.file.forms[0].body[0];
+    auto text = p.sources.text(st.range.file);
+    EXPECT_EQ(text.substr(st.range.begin, st.range.end - st.range.begin), "f::Hom(A, B)");
+    const auto& call = st.args[1];
+    EXPECT_EQ(text.substr(call.name_range.begin, call.name_range.end - call.name_range.begin),
+              "Hom");
+}
+
+TEST(Parser, RecoversAtTheNextStatement) {
+    Parsed p("@present S(FreeSchema) begin\n  A::Ob )\n  B::Ob\n  C:: \nend\n");
+    EXPECT_EQ(p.sink.num_errors(), 2u) << p.sink.render();
+    ASSERT_EQ(p.file.forms.size(), 1u);
+    // A::Ob parsed before the stray token and B::Ob after it; "C::" is dropped.
+    EXPECT_EQ(p.file.forms[0].body.size(), 2u);
+}
+
+TEST(Parser, ReportsMissingEnd) {
+    Parsed p("@present S(FreeSchema) begin\n  A::Ob\n");
+    ASSERT_EQ(p.sink.num_errors(), 1u);
+    EXPECT_NE(p.sink.render().find("missing 'end' for '@present'"), std::string::npos);
+}
+
+TEST(Identifier, RejectsKeywordsAndOperators) {
+    EXPECT_TRUE(is_identifier("gripper"));
+    EXPECT_TRUE(is_identifier("_x1"));
+    EXPECT_FALSE(is_identifier("end"));
+    EXPECT_FALSE(is_identifier("true"));
+    EXPECT_FALSE(is_identifier("1x"));
+    EXPECT_FALSE(is_identifier("a b"));
+    EXPECT_FALSE(is_identifier("a⋅b"));
+    EXPECT_FALSE(is_identifier(""));
+}
+
+} // namespace
+} // namespace catplan::lang
