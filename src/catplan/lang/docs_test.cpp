@@ -4,6 +4,7 @@
 #include "catplan/lang/module.hpp"
 
 #include <gtest/gtest.h>
+
 #include <fstream>
 #include <sstream>
 

@@ -35,9 +35,17 @@ const char* kPQR = R"(
 end
 )";
 
-ObId ob(const ACSet& x, std::string_view n) { return *x.schema().find_ob(n); }
-HomId hom(const ACSet& x, std::string_view n) { return *x.schema().find_hom(n); }
-AttrId attr(const ACSet& x, std::string_view n) { return *x.schema().find_attr(n); }
+ObId ob(const ACSet& x, std::string_view n) {
+    return *x.schema().find_ob(n);
+}
+
+HomId hom(const ACSet& x, std::string_view n) {
+    return *x.schema().find_hom(n);
+}
+
+AttrId attr(const ACSet& x, std::string_view n) {
+    return *x.schema().find_attr(n);
+}
 
 TEST(FreeInstance, UndefinedHomsGetFreshPartsRecursively) {
     Loaded l(std::string(kPQR) + "@acset_colim I(S) begin\n  p::P\nend\n");
@@ -282,9 +290,9 @@ end
 TEST(Import, ResolvesRelativeToTheImportingFile) {
     SourceManager sources;
     DiagnosticSink sink(sources);
-    Module m = load_source(std::string(CATPLAN_SOURCE_DIR) + "/tests/lang/main.cp",
-                           "@import \"../../examples/kitchenworld/kitchenworld.cp\"\n", sources,
-                           sink);
+    Module m =
+        load_source(std::string(CATPLAN_SOURCE_DIR) + "/tests/lang/main.cp",
+                    "@import \"../../examples/kitchenworld/kitchenworld.cp\"\n", sources, sink);
     ASSERT_FALSE(sink.has_errors()) << sink.render();
     ASSERT_NE(m.find("KitchenWorld"), nullptr);
     EXPECT_TRUE(m.find("KitchenWorld")->imported);

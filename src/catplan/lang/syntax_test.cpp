@@ -28,9 +28,9 @@ struct Lexed {
 TEST(Lexer, SplitsOperatorsAndNormalisesUnicode) {
     Lexed l("f::Hom(A,B) == g ⋅ h · k . m <: => -> → ; @x");
     EXPECT_FALSE(l.sink.has_errors());
-    EXPECT_EQ(l.texts(), (std::vector<std::string>{"f", "::", "Hom", "(", "A", ",", "B", ")", "==",
-                                                   "g", ".", "h", ".", "k", ".", "m", "<:", "=>",
-                                                   "->", "->", ";", "@", "x"}));
+    EXPECT_EQ(l.texts(), (std::vector<std::string>{"f",  "::", "Hom", "(",  "A", ",", "B", ")",
+                                                   "==", "g",  ".",   "h",  ".", "k", ".", "m",
+                                                   "<:", "=>", "->",  "->", ";", "@", "x"}));
 }
 
 TEST(Lexer, ReadsNumbersOfBothKinds) {
