@@ -300,3 +300,27 @@ TEST(Import, ResolvesRelativeToTheImportingFile) {
 
 } // namespace
 } // namespace catplan::lang
+
+namespace catplan::lang {
+namespace {
+
+// Every prefix of a real file must load without crashing, and every error must be located.
+TEST(Robustness, EveryPrefixOfTheCaseStudyLoadsWithLocatedErrors) {
+    std::string path =
+        std::string(CATPLAN_SOURCE_DIR) + "/examples/colorblocksworld/colorblocksworld.cp";
+    SourceManager files;
+    auto id = files.add_file(path);
+    ASSERT_TRUE(id.has_value());
+    std::string text(files.text(*id));
+    for (std::size_t n = 0; n <= text.size(); n += 7) {
+        SourceManager sources;
+        DiagnosticSink sink(sources);
+        (void)load_source("prefix.cp", text.substr(0, n), sources, sink);
+        for (const auto& d : sink.diagnostics()) {
+            EXPECT_TRUE(d.range.valid()) << n << ": " << d.message;
+        }
+    }
+}
+
+} // namespace
+} // namespace catplan::lang
