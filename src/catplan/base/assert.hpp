@@ -17,11 +17,12 @@ namespace catplan::detail {
 
 } // namespace catplan::detail
 
-#define CATPLAN_ASSERT(cond, msg)                                                                 \
-    do {                                                                                          \
-        if (!(cond)) {                                                                            \
-            ::catplan::detail::assertion_failed(#cond, msg, __FILE__, __LINE__);                  \
-        }                                                                                         \
+#define CATPLAN_ASSERT(cond, msg)                                                                  \
+    do {                                                                                           \
+        if (!(cond)) {                                                                             \
+            ::catplan::detail::assertion_failed(#cond, msg, __FILE__, __LINE__);                   \
+        }                                                                                          \
     } while (false)
 
-#define CATPLAN_UNREACHABLE(msg) ::catplan::detail::assertion_failed("unreachable", msg, __FILE__, __LINE__)
+#define CATPLAN_UNREACHABLE(msg)                                                                   \
+    ::catplan::detail::assertion_failed("unreachable", msg, __FILE__, __LINE__)

@@ -33,11 +33,14 @@ public:
     Diagnostic& error(SourceRange range, std::string message);
     /// Records a warning at a range.
     Diagnostic& warning(SourceRange range, std::string message);
+
     /// Records an error that belongs to no source text (a missing file, a bad option).
     Diagnostic& error(std::string message) { return error(SourceRange{}, std::move(message)); }
 
     bool has_errors() const { return num_errors_ > 0; }
+
     std::size_t num_errors() const { return num_errors_; }
+
     const std::vector<Diagnostic>& diagnostics() const { return diagnostics_; }
 
     /// All diagnostics, stably sorted by file and offset, with source lines and carets.

@@ -13,8 +13,11 @@ template <class Tag>
 class Id {
 public:
     constexpr Id() = default;
+
     constexpr explicit Id(std::uint32_t index) : index_(index) {}
+
     constexpr std::uint32_t index() const { return index_; }
+
     friend constexpr auto operator<=>(Id, Id) = default;
 
 private:

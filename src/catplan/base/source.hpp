@@ -20,6 +20,7 @@ struct SourceRange {
     std::uint32_t end = 0;
 
     bool valid() const { return file != kNoFile; }
+
     /// The smallest range covering both (which must be in the same file, or one invalid).
     SourceRange merge(SourceRange other) const;
 };
@@ -37,7 +38,9 @@ public:
     std::optional<std::uint32_t> add_file(const std::string& path);
 
     std::string_view name(std::uint32_t file) const { return files_[file]->name; }
+
     std::string_view text(std::uint32_t file) const { return files_[file]->text; }
+
     std::size_t num_files() const { return files_.size(); }
 
     /// Line and column of a byte offset.
@@ -51,6 +54,7 @@ private:
         std::string text;
         std::vector<std::uint32_t> line_starts;
     };
+
     std::vector<std::unique_ptr<Buffer>> files_;
 };
 

@@ -16,11 +16,14 @@ public:
     static Symbol intern(std::string_view text);
     /// The interned text; valid for the life of the process.
     std::string_view str() const;
+
     constexpr std::uint32_t id() const { return id_; }
+
     friend constexpr bool operator==(Symbol a, Symbol b) = default;
 
 private:
     constexpr explicit Symbol(std::uint32_t id) : id_(id) {}
+
     std::uint32_t id_ = 0; // 0 is the empty string
 };
 

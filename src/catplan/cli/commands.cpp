@@ -67,9 +67,9 @@ const lang::Declaration* find_declaration(const lang::Module& m, const std::stri
         return nullptr;
     }
     if (kind && d->kind != *kind) {
-        error(err, fmt::format("'{}' is a {}, not a {}", name,
-                               d->kind == lang::DeclKind::Schema ? "schema" : "instance",
-                               *kind == lang::DeclKind::Schema ? "schema" : "instance"));
+        error(err, fmt::format("'{}' is {}, not {}", name,
+                               d->kind == lang::DeclKind::Schema ? "a schema" : "an instance",
+                               *kind == lang::DeclKind::Schema ? "a schema" : "an instance"));
         return nullptr;
     }
     return d;
@@ -143,8 +143,7 @@ std::string format_morphism(const hom::ACSetMorphism& f, const acset::ACSet& x,
         }
         std::string line;
         for (std::uint32_t j = 0; j < x.num_vars(ty); ++j) {
-            line += fmt::format("{}{} ↦ {}", j ? ", " : "",
-                                x.value_label(ty, acset::Value::var(j)),
+            line += fmt::format("{}{} ↦ {}", j ? ", " : "", x.value_label(ty, acset::Value::var(j)),
                                 y.value_label(ty, f.var_components[t][j]));
         }
         text += fmt::format("  {}: {}\n", s.attr_type(ty).name, line);
@@ -188,7 +187,7 @@ int cmd_homs(const HomsArgs& a, std::ostream& out, std::ostream& err) {
         out << result.count << "\n";
         return result.count > 0 ? kOk : kNo;
     }
-    options.max_results = a.all ? (a.max ? a.max : SIZE_MAX) : 1;
+    options.max_results = a.all ? a.max : 1; // 0 = no limit
     auto result = hom::find_homomorphisms(x, y, options);
     if (!result.error.empty()) {
         error(err, result.error);
@@ -276,7 +275,8 @@ int cmd_json_import(const std::vector<std::string>& args, std::string name,
 int run(int argc, char** argv, std::ostream& out, std::ostream& err) {
     CLI::App app{"catplan: categorical task planning and plan transfer between planning domains.\n"
                  "Exit codes: 0 ok, 1 no (e.g. no homomorphism), 2 bad input, 3 unsupported, "
-                 "4 limit reached, 70 internal error (docs/exit-codes.md)."};
+                 "4 limit reached, 70 internal error (docs/exit-codes.md).",
+                 "catplan"};
     app.require_subcommand(1);
     app.set_version_flag("--version", "catplan 0.1.0");
 

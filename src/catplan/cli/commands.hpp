@@ -8,12 +8,12 @@ namespace catplan::cli {
 
 /// Exit codes (docs/exit-codes.md).
 enum ExitCode : int {
-    kOk = 0,           ///< success; for a question, "yes"
-    kNo = 1,           ///< a well-formed question whose answer is "no" (no homomorphism)
-    kBadInput = 2,     ///< bad input or usage: diagnostics on stderr, nothing written
-    kUnsupported = 3,  ///< valid input that uses something catplan does not support
-    kLimit = 4,        ///< a node, time or memory limit stopped the work
-    kInternal = 70,    ///< a bug in catplan
+    kOk = 0,          ///< success; for a question, "yes"
+    kNo = 1,          ///< a well-formed question whose answer is "no" (no homomorphism)
+    kBadInput = 2,    ///< bad input or usage: diagnostics on stderr, nothing written
+    kUnsupported = 3, ///< valid input that uses something catplan does not support
+    kLimit = 4,       ///< a node, time or memory limit stopped the work
+    kInternal = 70,   ///< a bug in catplan
 };
 
 /// Runs the catplan command line and returns its exit code.

@@ -1,0 +1,1 @@
+show --frobnicate examples/colorblocksworld/colorblocksworld.cp Initial

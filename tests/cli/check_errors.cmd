@@ -1,0 +1,1 @@
+check tests/lang/err_several_at_once.cp

@@ -1,0 +1,1 @@
+check examples/colorblocksworld/colorblocksworld.cp examples/kitchenworld/kitchenworld.cp

@@ -1,0 +1,1 @@
+check tests/cli/data/no_such_file.cp

@@ -1,0 +1,1 @@
+check tests/lang/ont_blocksworld_undeclared_inon.cp

@@ -1,0 +1,1 @@
+homs tests/cli/data/graphs.cp Cycle3 Bowtie --monic --all

@@ -1,0 +1,1 @@
+homs tests/cli/data/graphs.cp Graph Cycle3

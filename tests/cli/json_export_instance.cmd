@@ -1,0 +1,1 @@
+json export tests/cli/data/graphs.cp Path2

@@ -1,0 +1,1 @@
+json import tests/cli/data/schgraph.json --name SchGraph

@@ -1,0 +1,1 @@
+show examples/kitchenworld/kitchenworld.cp KitchenWorld
