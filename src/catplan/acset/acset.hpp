@@ -40,10 +40,12 @@ public:
     explicit ACSet(SchemaPtr schema);
 
     const Schema& schema() const { return *schema_; }
+
     const SchemaPtr& schema_ptr() const { return schema_; }
 
     // ---- parts -------------------------------------------------------------------------------
     std::size_t num_parts(ObId x) const { return nparts_[x.index()]; }
+
     /// Adds a part with unset homs and attributes, optionally named; returns its id.
     Part add_part(ObId x, std::string_view name = {});
     /// Adds n unnamed parts; returns the id of the first.
@@ -56,9 +58,12 @@ public:
 
     // ---- homs --------------------------------------------------------------------------------
     Part subpart(HomId f, Part p) const { return homs_[f.index()][p]; }
+
     /// Sets f(p) = q (q may be kNoPart to unset it).
     void set_subpart(HomId f, Part p, Part q);
+
     std::span<const Part> column(HomId f) const { return homs_[f.index()]; }
+
     /// The parts p with f(p) == q, in no particular (but deterministic) order.
     std::span<const Part> incident(HomId f, Part q) const;
     /// Builds every preimage index now (otherwise each is built on its first incident call).
@@ -66,12 +71,15 @@ public:
 
     // ---- attributes --------------------------------------------------------------------------
     const Value& subpart(AttrId a, Part p) const { return attrs_[a.index()][p]; }
+
     /// Sets a(p) = v; a variable must exist in this state (asserted).
     void set_subpart(AttrId a, Part p, Value v);
+
     std::span<const Value> column(AttrId a) const { return attrs_[a.index()]; }
 
     // ---- attribute variables -----------------------------------------------------------------
     std::size_t num_vars(AttrTypeId t) const { return nvars_[t.index()]; }
+
     /// Adds a variable of t, optionally named; returns it as a Value.
     Value add_var(AttrTypeId t, std::string_view name = {});
     /// Removes variable j by pop-and-swap: cells holding it become unset, cells holding the last
@@ -82,12 +90,15 @@ public:
     // ---- names -------------------------------------------------------------------------------
     /// The name of a part, or "" when it has none.
     std::string_view part_name(ObId x, Part p) const { return names_[x.index()][p].str(); }
+
     void set_part_name(ObId x, Part p, std::string_view name);
     /// The first part of x with this name.
     std::optional<Part> find_part(ObId x, std::string_view name) const;
+
     std::string_view var_name(AttrTypeId t, std::uint32_t j) const {
         return var_names_[t.index()][j].str();
     }
+
     void set_var_name(AttrTypeId t, std::uint32_t j, std::string_view name);
     /// "A" for a named part, "#3" (1-based) for an unnamed one.
     std::string part_label(ObId x, Part p) const;
@@ -105,6 +116,7 @@ private:
         std::vector<std::vector<Part>> lists; // by target part
         std::vector<std::uint32_t> pos;       // position of each source part in its list
     };
+
     void index_insert(HomId f, Part p, Part q);
     void index_erase(HomId f, Part p, Part q);
     const Preimage& index(HomId f) const;

@@ -2,6 +2,7 @@
 #include "catplan/acset/printer.hpp"
 
 #include <gtest/gtest.h>
+
 #include <random>
 
 namespace catplan::acset {

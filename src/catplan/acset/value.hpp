@@ -16,31 +16,37 @@ public:
     enum class Tag : std::uint8_t { Unset, Var, Bool, Int, Float, String };
 
     constexpr Value() = default;
+
     static constexpr Value var(std::uint32_t index) {
         Value v;
         v.tag_ = Tag::Var;
         v.u_.var = index;
         return v;
     }
+
     static constexpr Value boolean(bool b) {
         Value v;
         v.tag_ = Tag::Bool;
         v.u_.b = b;
         return v;
     }
+
     static constexpr Value integer(std::int64_t i) {
         Value v;
         v.tag_ = Tag::Int;
         v.u_.i = i;
         return v;
     }
+
     static constexpr Value real(double f) {
         Value v;
         v.tag_ = Tag::Float;
         v.u_.f = f;
         return v;
     }
+
     static Value string(std::string_view s) { return symbol(Symbol::intern(s)); }
+
     static constexpr Value symbol(Symbol s) {
         Value v;
         v.tag_ = Tag::String;
@@ -49,16 +55,24 @@ public:
     }
 
     constexpr Tag tag() const { return tag_; }
+
     constexpr bool is_unset() const { return tag_ == Tag::Unset; }
+
     constexpr bool is_var() const { return tag_ == Tag::Var; }
+
     /// A concrete value (not a variable, not unset).
     constexpr bool is_concrete() const { return tag_ >= Tag::Bool; }
 
     constexpr std::uint32_t var_index() const { return u_.var; }
+
     constexpr bool as_bool() const { return u_.b; }
+
     constexpr std::int64_t as_int() const { return u_.i; }
+
     constexpr double as_float() const { return u_.f; }
+
     constexpr Symbol as_symbol() const { return u_.s; }
+
     std::string_view as_string() const { return u_.s.str(); }
 
     /// The kind of a concrete value (Unknown for a variable or unset).
@@ -74,8 +88,10 @@ public:
 
 private:
     Tag tag_ = Tag::Unset;
+
     union U {
         constexpr U() : i(0) {}
+
         bool b;
         std::int64_t i;
         double f;

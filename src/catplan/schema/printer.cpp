@@ -23,14 +23,14 @@ std::string describe(const Schema& s) {
     out += fmt::format("\n  attributes ({}):\n", s.num_attrs());
     for (std::uint32_t i = 0; i < s.num_attrs(); ++i) {
         const auto& a = s.attr(AttrId(i));
-        out += fmt::format("    {} : {} → {}\n", a.name, s.ob(a.dom).name,
-                           s.attr_type(a.codom).name);
+        out +=
+            fmt::format("    {} : {} → {}\n", a.name, s.ob(a.dom).name, s.attr_type(a.codom).name);
     }
     if (!s.equations().empty()) {
         out += fmt::format("  equations ({}):\n", s.equations().size());
         for (const auto& eq : s.equations()) {
-            out += fmt::format("    {} == {}\n", s.path_to_string(eq.lhs),
-                               s.path_to_string(eq.rhs));
+            out +=
+                fmt::format("    {} == {}\n", s.path_to_string(eq.lhs), s.path_to_string(eq.rhs));
         }
     }
     return out;

@@ -214,8 +214,8 @@ bool Schema::paths_equal(const Path& a, const Path& b) const {
     }
     Word start = to_word(*this, a), goal = to_word(*this, b);
     // Acyclic: every path is shorter than the number of objects, so the bound is exact.
-    std::size_t bound = is_cyclic() ? std::max(start.size(), goal.size()) + 2 * longest
-                                    : obs_.size() + 1;
+    std::size_t bound =
+        is_cyclic() ? std::max(start.size(), goal.size()) + 2 * longest : obs_.size() + 1;
     constexpr std::size_t kMaxWords = 200000;
     std::set<Word> seen{start};
     std::deque<Word> queue{start};

@@ -91,6 +91,7 @@ public:
     explicit Schema(std::string name) : name_(std::move(name)) {}
 
     const std::string& name() const { return name_; }
+
     void set_name(std::string name) { name_ = std::move(name); }
 
     /// Adds an object; the name must be new (checked by the caller, asserted here).
@@ -104,18 +105,26 @@ public:
     AttrId add_attr(std::string name, ObId dom, AttrTypeId codom, SourceRange range = {});
     /// Adds an equation; both paths must have the same domain and codomain (asserted).
     void add_equation(Equation eq);
+
     /// Fixes the kind of an attribute type (used when a kind is inferred from a literal).
     void set_kind(AttrTypeId t, ValueKind kind) { attr_types_[t.index()].kind = kind; }
 
     std::size_t num_obs() const { return obs_.size(); }
+
     std::size_t num_homs() const { return homs_.size(); }
+
     std::size_t num_attr_types() const { return attr_types_.size(); }
+
     std::size_t num_attrs() const { return attrs_.size(); }
 
     const ObInfo& ob(ObId x) const { return obs_[x.index()]; }
+
     const HomInfo& hom(HomId f) const { return homs_[f.index()]; }
+
     const AttrTypeInfo& attr_type(AttrTypeId t) const { return attr_types_[t.index()]; }
+
     const AttrInfo& attr(AttrId a) const { return attrs_[a.index()]; }
+
     const std::vector<Equation>& equations() const { return equations_; }
 
     /// What a name refers to, if anything.
@@ -127,10 +136,13 @@ public:
 
     /// Homs out of an object, in declaration order.
     std::span<const HomId> homs_from(ObId x) const { return homs_from_[x.index()]; }
+
     /// Homs into an object, in declaration order.
     std::span<const HomId> homs_into(ObId x) const { return homs_into_[x.index()]; }
+
     /// Attributes of an object, in declaration order.
     std::span<const AttrId> attrs_from(ObId x) const { return attrs_from_[x.index()]; }
+
     /// Attributes valued in an attribute type, in declaration order.
     std::span<const AttrId> attrs_into(AttrTypeId t) const { return attrs_into_[t.index()]; }
 
