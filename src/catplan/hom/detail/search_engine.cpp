@@ -237,6 +237,7 @@ std::size_t Engine::estimate(std::uint32_t ob, Part x, Source& src) {
         const KeyIndex& k = key_index(ob);
         auto it = k.ranges.find(h);
         if (it == k.ranges.end()) {
+            src = Source{k.parts.data(), 0};
             return 0;
         }
         std::size_t n = it->second.second - it->second.first;
