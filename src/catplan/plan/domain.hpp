@@ -1,0 +1,70 @@
+#pragma once
+// Planning domains, problems and plans (semantics.md "Planning").
+//
+// A domain is a schema and named rules; a problem is an initial state and a goal state on that
+// schema; a plan is a list of steps `unstack(E, D)`, whose arguments bind the rule's parameters to
+// parts of the current state by name. The rest of the match is completed by search and must be
+// unique. A plan is valid when every step's match exists and satisfies the gluing conditions, and
+// the goal embeds monically (monic on objects only; the goal's unknowns may bind to any value).
+
+#include "catplan/acset/acset.hpp"
+#include "catplan/base/diagnostic.hpp"
+#include "catplan/base/source.hpp"
+#include "catplan/rewrite/rule.hpp"
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace catplan::plan {
+
+using acset::ACSet;
+using rewrite::Rule;
+using rewrite::RulePtr;
+
+struct Domain {
+    std::string name;
+    schema::SchemaPtr schema;
+    std::vector<RulePtr> rules;
+    SourceRange range;
+
+    /// The rule with this name, or nullptr.
+    const Rule* find_rule(std::string_view rule_name) const;
+};
+
+using DomainPtr = std::shared_ptr<const Domain>;
+
+struct Problem {
+    std::string name;
+    DomainPtr domain;
+    std::shared_ptr<const ACSet> initial;
+    std::shared_ptr<const ACSet> goal;
+    SourceRange range;
+};
+
+using ProblemPtr = std::shared_ptr<const Problem>;
+
+/// One step of a plan: an action and the names of the parts bound to its parameters.
+struct Step {
+    std::string action;
+    std::vector<std::string> args;
+    SourceRange range; // where the step was written (invalid for a step made by the planner)
+
+    /// "unstack(E, D)".
+    std::string to_string() const;
+};
+
+struct Plan {
+    std::vector<Step> steps;
+
+    /// One step per line, in the format parse_plan reads.
+    std::string to_string() const;
+};
+
+/// Parses a plan: steps `name(arg, ...)` (or `name` with no arguments) separated by newlines or
+/// `;`, `#` comments; every syntax error is reported to sink; nullopt when there was one.
+std::optional<Plan> parse_plan(std::uint32_t file, const SourceManager& sources,
+                               DiagnosticSink& sink);
+
+} // namespace catplan::plan

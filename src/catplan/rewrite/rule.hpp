@@ -1,0 +1,120 @@
+#pragma once
+// Actions as DPO rewrite rules: a span L <-l- K -r-> R of states (Pre, Keep, Eff), l monic.
+//
+//        l       r          A match m : L -> X (monic on every object by default) picks where the
+//   L <----- K -----> R     rule applies. The parts of L outside l(K) are deleted, the parts of R
+//   |m       |        |     outside r(K) are created, and the kept parts are glued to R.
+//   v        v        v
+//   X <----- Z -----> Y     Z = X - m(L - l(K));   Y = the pushout of R <- K -> Z.
+//
+// Updates of kept parts (semantics.md "Actions"): parts of Y that come from R take R's values, with
+// R's variables replaced by what the match bound through l and r. So a kept part whose attribute is
+// a variable in K and a constant in R has that attribute updated (the paper's
+// `isClear(underblock) == true`), and one whose attribute is the same variable in L, K and R keeps
+// its value. Homs are treated alike: K may leave a hom of a kept part unset (a partial state),
+// meaning "the rule redirects it"; R then says where it points (the paper's `isHolding(gripper) ==
+// block` with `gripper` kept). Such a hom is not a dangling reference even if its old target is
+// deleted, since R replaces it.
+//
+// Attribute values of created parts: a constant of R, a value bound through K, or an expression
+// (AttrExpr) computed from the values the match bound to L's variables. A *named* variable of R that
+// none of these binds is a rule-definition error; an unnamed one (an attribute the Eff block left
+// unspecified on a created part) becomes a fresh unknown of the result state.
+//
+// Negative application conditions L -> N: a match is rejected when it extends along L -> N to a
+// monic N -> X (PDDL's negative preconditions).
+
+#include "catplan/acset/acset.hpp"
+#include "catplan/base/result.hpp"
+#include "catplan/base/source.hpp"
+#include "catplan/hom/morphism.hpp"
+
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace catplan::rewrite {
+
+using acset::ACSet;
+using acset::Value;
+using hom::ACSetMorphism;
+
+/// An expression computing an attribute value of a created or updated part from the values the
+/// match bound to L's variables.
+struct AttrExpr {
+    enum class Op : std::uint8_t {
+        Const,  // `constant`
+        Input,  // the value bound to L's variable `input_var` of type `input_type`
+        Add, Sub, Mul, Div, Neg,  // arithmetic on Int/Float (Int if both Int)
+        Concat,                   // string concatenation (`*` in Julia)
+        Not, And, Or,             // Bool
+        Eq, Ne, Lt, Le, Gt, Ge,   // comparisons, giving Bool
+    };
+    Op op = Op::Const;
+    Value constant;
+    AttrTypeId input_type;
+    std::uint32_t input_var = 0;
+    std::vector<AttrExpr> args;
+    SourceRange range;
+};
+
+/// Evaluates an expression; `input(type, var)` gives the value the match bound to an L variable.
+/// Fails with a reason on a type error, a division by zero, or an input that is not concrete.
+Result<Value> evaluate(const AttrExpr& e,
+                       const std::function<Value(AttrTypeId, std::uint32_t)>& input);
+
+/// An application condition: the match must not (negative) or must (positive) extend along
+/// n : L -> N to a monic morphism N -> X.
+struct ApplicationCondition {
+    std::string name;
+    bool negative = true;
+    ACSet n_state;
+    ACSetMorphism n; // L -> N
+    SourceRange range;
+};
+
+/// A rule parameter: a named generator of L (`unstack(block, underblock)`).
+struct Parameter {
+    std::string name;
+    ObId ob;
+    Part part;
+};
+
+struct Rule {
+    std::string name;
+    ACSet L, K, R;
+    ACSetMorphism l; // K -> L, monic
+    ACSetMorphism r; // K -> R
+    std::vector<ApplicationCondition> conditions;
+    /// Per attribute type, per variable of R: the expression giving its value, if any.
+    std::vector<std::vector<std::optional<AttrExpr>>> exprs;
+    std::vector<Parameter> parameters;
+    SourceRange range;
+
+    /// A rule with empty states on a schema (to be filled by a builder or the elaborator).
+    explicit Rule(schema::SchemaPtr s) : L(s), K(s), R(s) {}
+};
+
+using RulePtr = std::shared_ptr<const Rule>;
+
+enum class RuleProblemKind {
+    LeftNotNatural,     // l is not a morphism K -> L (detail: the naturality failure)
+    RightNotNatural,    // r is not a morphism K -> R
+    LeftNotMonic,       // l identifies two parts of K
+    UnboundVariable,    // a named variable of R bound by nothing (type, var)
+    ExprOnBoundVariable // an expression given for a variable that K already binds (type, var)
+};
+
+struct RuleProblem {
+    RuleProblemKind kind;
+    AttrTypeId type;        // UnboundVariable, ExprOnBoundVariable
+    std::uint32_t var = 0;  // the variable of R
+    std::string message;    // in words, with names
+};
+
+/// Every problem of a rule's definition (empty when the rule is well formed).
+std::vector<RuleProblem> check_rule(const Rule& rule);
+
+} // namespace catplan::rewrite
