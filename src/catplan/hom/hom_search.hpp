@@ -84,6 +84,9 @@ struct HomSearchOptions {
     std::vector<VarBinding> initial_vars;
     /// Allowed images per domain part; parts without an entry may go anywhere.
     std::vector<CandidateSet> candidates;
+    /// An extra test of each tentative assignment dom part -> codom part of an object (e.g. the
+    /// dangling condition of a rewrite rule), called before the assignment is made; empty = none.
+    std::function<bool(ObId ob, Part dom, Part codom)> accept;
     /// Stop after this many morphisms (0 = no limit).
     std::uint64_t max_results = 0;
     /// Stop after trying this many assignments (0 = no limit).

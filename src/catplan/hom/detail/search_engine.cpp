@@ -6,7 +6,6 @@
 #include <algorithm>
 #include <fmt/format.h>
 #include <limits>
-#include <unordered_map>
 #include <utility>
 
 namespace catplan::hom::detail {
@@ -24,10 +23,46 @@ struct Source {
 // Codomain parts of one object grouped by the tuple of their hom values, so that a domain part
 // whose homs all have images finds its candidates with one hash lookup. Parts are grouped by
 // the 64-bit hash of the tuple: a collision only adds candidates, which assign() then rejects.
+// The groups are found through an open-addressing table (linear probing, power-of-two size,
+// at most half full): one probe sequence per lookup and no allocation after it is built.
 struct KeyIndex {
+    struct Slot {
+        std::uint64_t key = 0;
+        std::uint32_t begin = 0;
+        std::uint32_t end = 0; // begin == end marks an empty slot (groups are never empty)
+    };
+
     bool built = false;
     std::vector<Part> parts;
-    std::unordered_map<std::uint64_t, std::pair<std::uint32_t, std::uint32_t>> ranges;
+    std::vector<Slot> table;
+    std::uint64_t mask = 0;
+
+    const Slot* find(std::uint64_t key) const {
+        for (std::uint64_t i = hash_mix(key) & mask;; i = (i + 1) & mask) {
+            const Slot& slot = table[i];
+            if (slot.begin == slot.end) {
+                return nullptr;
+            }
+            if (slot.key == key) {
+                return &slot;
+            }
+        }
+    }
+
+    void insert(std::uint64_t key, std::uint32_t begin, std::uint32_t end) {
+        std::uint64_t i = hash_mix(key) & mask;
+        while (table[i].begin != table[i].end) {
+            i = (i + 1) & mask;
+        }
+        table[i] = Slot{key, begin, end};
+    }
+};
+
+// A hom out of an object, with raw column pointers for the inner loops.
+struct HomRef {
+    std::uint32_t codom;
+    const Part* xcol;
+    const Part* ycol;
 };
 
 struct TrailEntry {
@@ -75,15 +110,17 @@ private:
     std::vector<std::vector<char>> vused_;             // per monic type: codomain variable taken
     std::vector<char> monic_t_;                        // per attribute type
     std::vector<std::pair<std::uint32_t, std::uint32_t>> floating_; // (type, var) to enumerate
-    std::vector<KeyIndex> keys_; // per object, built on first use
+    std::vector<KeyIndex> keys_;                // per object, built on first use
+    std::vector<std::vector<HomRef>> homs_out_; // per object: the homs out of it
+    std::size_t unassigned_ = 0;                // domain parts without an image
     std::vector<TrailEntry> trail_;
     ACSetMorphism scratch_;
 };
 
 std::uint64_t Engine::codom_key(std::uint32_t ob, Part y) const {
     std::uint64_t h = 0x51ed270b27e1f2c3ULL;
-    for (HomId f : s_.homs_from(ObId(ob))) {
-        h = hash_combine(h, y_.subpart(f, y));
+    for (const HomRef& f : homs_out_[ob]) {
+        h = hash_combine(h, f.ycol[y]);
     }
     return h;
 }
@@ -102,15 +139,19 @@ const KeyIndex& Engine::key_index(std::uint32_t ob) {
     // Sorting by (key, part) keeps each group in increasing part order: results stay ordered.
     std::sort(keyed.begin(), keyed.end());
     k.parts.resize(n);
-    k.ranges.reserve(n);
+    std::size_t size = 16;
+    while (size < 2 * n) {
+        size *= 2;
+    }
+    k.table.assign(size, {});
+    k.mask = size - 1;
     for (std::size_t i = 0; i < n;) {
         std::size_t j = i;
         while (j < n && keyed[j].first == keyed[i].first) {
             k.parts[j] = keyed[j].second;
             ++j;
         }
-        k.ranges.emplace(keyed[i].first,
-                         std::pair{static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(j)});
+        k.insert(keyed[i].first, static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(j));
         i = j;
     }
     return k;
@@ -150,6 +191,9 @@ bool Engine::assign(std::uint32_t ob, Part x, Part y) {
     if (monic_[ob] && inv_[ob][y] != kNoPart) {
         return false;
     }
+    if (opt_.accept && !opt_.accept(ObId(ob), x, y)) {
+        return false;
+    }
     // Attributes first: they fail fast and need no recursion.
     for (AttrId a : s_.attrs_from(ObId(ob))) {
         const Value& xv = x_.subpart(a, x);
@@ -175,17 +219,18 @@ bool Engine::assign(std::uint32_t ob, Part x, Part y) {
         inv_[ob][y] = x;
     }
     trail_.push_back({false, ob, x});
+    --unassigned_;
     // Forward checking: the images of x's hom values are now determined.
-    for (HomId f : s_.homs_from(ObId(ob))) {
-        Part xf = x_.subpart(f, x);
-        Part yf = y_.subpart(f, y);
+    for (const HomRef& f : homs_out_[ob]) {
+        Part xf = f.xcol[x];
+        Part yf = f.ycol[y];
         if (xf == kNoPart) {
             if (opt_.iso && yf != kNoPart) {
                 return false;
             }
             continue; // an unset domain hom value constrains nothing
         }
-        if (yf == kNoPart || !assign(s_.hom(f).codom.index(), xf, yf)) {
+        if (yf == kNoPart || !assign(f.codom, xf, yf)) {
             return false;
         }
     }
@@ -208,6 +253,7 @@ void Engine::undo(std::size_t mark) {
                 inv_[e.a][y] = kNoPart;
             }
             y = kNoPart;
+            ++unassigned_;
         }
     }
 }
@@ -217,45 +263,46 @@ std::size_t Engine::estimate(std::uint32_t ob, Part x, Source& src) {
     if (has_cand_[ob] && !cand_[ob][x].empty()) {
         src = Source{cand_[ob][x].data(), cand_[ob][x].size()};
     }
-    auto homs = s_.homs_from(ObId(ob));
+    const auto& homs = homs_out_[ob];
     if (homs.empty()) {
         return src.size;
     }
     bool all_assigned = true;
-    for (HomId f : homs) {
-        Part xf = x_.subpart(f, x);
-        if (xf == kNoPart || assign_[s_.hom(f).codom.index()][xf] == kNoPart) {
+    for (const HomRef& f : homs) {
+        Part xf = f.xcol[x];
+        if (xf == kNoPart || assign_[f.codom][xf] == kNoPart) {
             all_assigned = false;
             break;
         }
     }
     if (all_assigned && homs.size() >= 2) {
         std::uint64_t h = 0x51ed270b27e1f2c3ULL;
-        for (HomId f : homs) {
-            h = hash_combine(h, assign_[s_.hom(f).codom.index()][x_.subpart(f, x)]);
+        for (const HomRef& f : homs) {
+            h = hash_combine(h, assign_[f.codom][f.xcol[x]]);
         }
         const KeyIndex& k = key_index(ob);
-        auto it = k.ranges.find(h);
-        if (it == k.ranges.end()) {
+        const KeyIndex::Slot* slot = k.find(h);
+        if (slot == nullptr) {
             src = Source{k.parts.data(), 0};
             return 0;
         }
-        std::size_t n = it->second.second - it->second.first;
+        std::size_t n = slot->end - slot->begin;
         if (n < src.size) {
-            src = Source{k.parts.data() + it->second.first, n};
+            src = Source{k.parts.data() + slot->begin, n};
         }
         return src.size;
     }
-    for (HomId f : homs) {
-        Part xf = x_.subpart(f, x);
+    auto hom_ids = s_.homs_from(ObId(ob));
+    for (std::size_t i = 0; i < homs.size(); ++i) {
+        Part xf = homs[i].xcol[x];
         if (xf == kNoPart) {
             continue;
         }
-        Part img = assign_[s_.hom(f).codom.index()][xf];
+        Part img = assign_[homs[i].codom][xf];
         if (img == kNoPart) {
             continue;
         }
-        auto inc = y_.incident(f, img);
+        auto inc = y_.incident(hom_ids[i], img);
         if (inc.size() < src.size) {
             src = Source{inc.data(), inc.size()};
         }
@@ -265,6 +312,9 @@ std::size_t Engine::estimate(std::uint32_t ob, Part x, Source& src) {
 
 bool Engine::search() {
     // Choose the unassigned part with the fewest candidates (ties: object order, part order).
+    if (unassigned_ == 0) {
+        return enumerate_floating(0);
+    }
     std::size_t best = std::numeric_limits<std::size_t>::max();
     std::uint32_t best_ob = 0;
     Part best_x = kNoPart;
@@ -431,6 +481,13 @@ bool Engine::prepare() {
         }
     }
 
+    homs_out_.resize(nobs);
+    for (std::uint32_t ob = 0; ob < nobs; ++ob) {
+        for (HomId f : s_.homs_from(ObId(ob))) {
+            homs_out_[ob].push_back(
+                HomRef{s_.hom(f).codom.index(), x_.column(f).data(), y_.column(f).data()});
+        }
+    }
     assign_.resize(nobs);
     inv_.resize(nobs);
     cand_.resize(nobs);
@@ -440,6 +497,7 @@ bool Engine::prepare() {
     for (std::uint32_t ob = 0; ob < nobs; ++ob) {
         assign_[ob].assign(x_.num_parts(ObId(ob)), kNoPart);
         total += assign_[ob].size();
+        unassigned_ += assign_[ob].size();
         if (monic_[ob]) {
             inv_[ob].assign(y_.num_parts(ObId(ob)), kNoPart);
         }
