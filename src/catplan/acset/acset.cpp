@@ -15,6 +15,14 @@ ACSet::ACSet(SchemaPtr schema) : schema_(std::move(schema)) {
     names_.resize(schema_->num_obs());
     var_names_.resize(schema_->num_attr_types());
     index_.resize(schema_->num_homs());
+    var_index_.resize(schema_->num_attr_types());
+    attr_slot_.resize(schema_->num_attrs());
+    for (std::uint32_t t = 0; t < schema_->num_attr_types(); ++t) {
+        auto into = schema_->attrs_into(AttrTypeId(t));
+        for (std::size_t i = 0; i < into.size(); ++i) {
+            attr_slot_[into[i].index()] = i;
+        }
+    }
 }
 
 Part ACSet::add_part(ObId x, std::string_view name) {
@@ -32,6 +40,9 @@ Part ACSet::add_part(ObId x, std::string_view name) {
     }
     for (AttrId a : schema_->attrs_from(x)) {
         attrs_[a.index()].emplace_back();
+        if (auto* vx = var_index_if_built(schema_->attr(a).codom)) {
+            vx->pos[attr_slot(a)].push_back(0);
+        }
     }
     names_[x.index()].push_back(Symbol::intern(name));
     return p;
@@ -157,9 +168,16 @@ Part ACSet::remove_part(ObId x, Part p) {
         lists.pop_back();
     }
     for (AttrId a : schema_->attrs_from(x)) {
-        auto& col = attrs_[a.index()];
-        col[p] = col[last];
-        col.pop_back();
+        set_subpart(a, p, Value());
+        if (p != last) {
+            Value moved = attrs_[a.index()][last];
+            set_subpart(a, last, Value());
+            set_subpart(a, p, moved);
+        }
+        attrs_[a.index()].pop_back();
+        if (auto* vx = var_index_if_built(schema_->attr(a).codom)) {
+            vx->pos[attr_slot(a)].pop_back();
+        }
     }
     auto& names = names_[x.index()];
     names[p] = names[last];
@@ -173,12 +191,68 @@ void ACSet::set_subpart(AttrId a, Part p, Value v) {
     CATPLAN_ASSERT(p < nparts_[info.dom.index()], "set_subpart: part out of range");
     CATPLAN_ASSERT(!v.is_var() || v.var_index() < nvars_[info.codom.index()],
                    "set_subpart: no such attribute variable");
-    attrs_[a.index()][p] = v;
+    Value& cell = attrs_[a.index()][p];
+    if (var_index_if_built(info.codom) != nullptr) {
+        if (cell.is_var()) {
+            var_index_erase(a, p, cell.var_index());
+        }
+        if (v.is_var()) {
+            var_index_insert(a, p, v.var_index());
+        }
+    }
+    cell = v;
+}
+
+const ACSet::VarIndex& ACSet::var_index(AttrTypeId t) const {
+    auto& slot = var_index_[t.index()];
+    if (!slot) {
+        VarIndex ix;
+        ix.lists.resize(nvars_[t.index()]);
+        for (AttrId a : schema_->attrs_into(t)) {
+            const auto& col = attrs_[a.index()];
+            std::vector<std::uint32_t> pos(col.size(), 0);
+            for (Part p = 0; p < col.size(); ++p) {
+                if (col[p].is_var()) {
+                    auto& list = ix.lists[col[p].var_index()];
+                    pos[p] = static_cast<std::uint32_t>(list.size());
+                    list.push_back({a, p});
+                }
+            }
+            ix.pos.push_back(std::move(pos));
+        }
+        slot = std::move(ix);
+    }
+    return *slot;
+}
+
+void ACSet::var_index_insert(AttrId a, Part p, std::uint32_t var) {
+    auto& ix = *var_index_[schema_->attr(a).codom.index()];
+    ix.lists[var].push_back({a, p});
+    ix.pos[attr_slot(a)][p] = static_cast<std::uint32_t>(ix.lists[var].size() - 1);
+}
+
+void ACSet::var_index_erase(AttrId a, Part p, std::uint32_t var) {
+    auto& ix = *var_index_[schema_->attr(a).codom.index()];
+    auto& list = ix.lists[var];
+    std::uint32_t i = ix.pos[attr_slot(a)][p];
+    CATPLAN_ASSERT(i < list.size() && list[i] == (Cell{a, p}), "variable index out of step");
+    Cell moved = list.back();
+    list[i] = moved;
+    ix.pos[attr_slot(moved.attr)][moved.part] = i;
+    list.pop_back();
+}
+
+std::span<const ACSet::Cell> ACSet::var_incident(AttrTypeId t, std::uint32_t j) const {
+    CATPLAN_ASSERT(j < nvars_[t.index()], "var_incident: variable out of range");
+    return var_index(t).lists[j];
 }
 
 Value ACSet::add_var(AttrTypeId t, std::string_view name) {
     auto j = nvars_[t.index()]++;
     var_names_[t.index()].push_back(Symbol::intern(name));
+    if (auto* vx = var_index_if_built(t)) {
+        vx->lists.emplace_back();
+    }
     return Value::var(j);
 }
 
@@ -186,15 +260,20 @@ std::uint32_t ACSet::remove_var(AttrTypeId t, std::uint32_t j) {
     auto n = nvars_[t.index()];
     CATPLAN_ASSERT(j < n, "remove_var: variable out of range");
     std::uint32_t last = n - 1;
-    for (AttrId a : schema_->attrs_into(t)) {
-        for (auto& cell : attrs_[a.index()]) {
-            if (cell == Value::var(j)) {
-                cell = Value();
-            } else if (cell == Value::var(last)) {
-                cell = Value::var(j);
-            }
+    var_index(t);
+    std::vector<Cell> cells(var_index(t).lists[j].begin(), var_index(t).lists[j].end());
+    for (const Cell& c : cells) {
+        set_subpart(c.attr, c.part, Value());
+    }
+    if (j != last) {
+        cells.assign(var_index(t).lists[last].begin(), var_index(t).lists[last].end());
+        for (const Cell& c : cells) {
+            set_subpart(c.attr, c.part, Value::var(j));
         }
     }
+    auto& lists = var_index_[t.index()]->lists;
+    CATPLAN_ASSERT(lists.back().empty(), "remove_var: stale references to the last variable");
+    lists.pop_back();
     auto& names = var_names_[t.index()];
     names[j] = names[last];
     names.pop_back();

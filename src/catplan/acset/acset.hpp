@@ -84,8 +84,19 @@ public:
     Value add_var(AttrTypeId t, std::string_view name = {});
     /// Removes variable j by pop-and-swap: cells holding it become unset, cells holding the last
     /// variable are renumbered to j. Returns the former index of the variable now at j, or
-    /// UINT32_MAX when j was the last.
+    /// UINT32_MAX when j was the last. Costs O(cells holding either variable).
     std::uint32_t remove_var(AttrTypeId t, std::uint32_t j);
+
+    /// A cell of an attribute column.
+    struct Cell {
+        AttrId attr;
+        Part part;
+        friend bool operator==(const Cell&, const Cell&) = default;
+    };
+
+    /// The cells holding variable j of t, in no particular (but deterministic) order; the index
+    /// is built on first use and then kept in step like the hom preimage indexes.
+    std::span<const Cell> var_incident(AttrTypeId t, std::uint32_t j) const;
 
     // ---- names -------------------------------------------------------------------------------
     /// The name of a part, or "" when it has none.
@@ -117,6 +128,22 @@ private:
         std::vector<std::uint32_t> pos;       // position of each source part in its list
     };
 
+    struct VarIndex {
+        std::vector<std::vector<Cell>> lists;        // by variable
+        std::vector<std::vector<std::uint32_t>> pos; // per attribute of the type: by part
+    };
+
+    VarIndex* var_index_if_built(AttrTypeId t) const {
+        return var_index_[t.index()] ? &*var_index_[t.index()] : nullptr;
+    }
+
+    const VarIndex& var_index(AttrTypeId t) const;
+
+    /// The position of attribute a among the attributes into its type.
+    std::size_t attr_slot(AttrId a) const { return attr_slot_[a.index()]; }
+
+    void var_index_insert(AttrId a, Part p, std::uint32_t var);
+    void var_index_erase(AttrId a, Part p, std::uint32_t var);
     void index_insert(HomId f, Part p, Part q);
     void index_erase(HomId f, Part p, Part q);
     const Preimage& index(HomId f) const;
@@ -129,6 +156,8 @@ private:
     std::vector<std::vector<Symbol>> names_;
     std::vector<std::vector<Symbol>> var_names_;
     mutable std::vector<std::optional<Preimage>> index_;
+    mutable std::vector<std::optional<VarIndex>> var_index_;
+    std::vector<std::size_t> attr_slot_;
 };
 
 } // namespace catplan::acset

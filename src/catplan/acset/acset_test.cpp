@@ -142,3 +142,70 @@ TEST(Value, DisplayAndKinds) {
 
 } // namespace
 } // namespace catplan::acset
+
+namespace catplan::acset {
+namespace {
+
+TEST(ACSet, VariableIndexStaysInStepUnderEdits) {
+    auto s = std::make_shared<Schema>("TwoAttrs");
+    ObId xo = s->add_ob("X");
+    AttrTypeId d = s->add_attr_type("D", schema::ValueKind::Int);
+    AttrId f = s->add_attr("f", xo, d);
+    AttrId g = s->add_attr("g", xo, d);
+    std::mt19937 rng(11);
+    ACSet a(s);
+    a.add_parts(xo, 12);
+    for (int i = 0; i < 5; ++i) {
+        a.add_var(d);
+    }
+    auto random_value = [&] {
+        auto k = static_cast<std::uint32_t>(rng() % (a.num_vars(d) + 2));
+        return k < a.num_vars(d) ? Value::var(k) : Value::integer(static_cast<int>(k));
+    };
+    for (Part p = 0; p < 12; ++p) {
+        a.set_subpart(f, p, random_value());
+        a.set_subpart(g, p, random_value());
+    }
+    a.var_incident(d, 0); // build the index, then edit
+    for (int round = 0; round < 40; ++round) {
+        switch (rng() % 4) {
+        case 0:
+            a.set_subpart(rng() % 2 ? f : g, static_cast<Part>(rng() % a.num_parts(xo)),
+                          random_value());
+            break;
+        case 1:
+            if (a.num_parts(xo) > 2) {
+                a.remove_part(xo, static_cast<Part>(rng() % a.num_parts(xo)));
+            }
+            break;
+        case 2:
+            if (a.num_vars(d) > 1) {
+                a.remove_var(d, static_cast<std::uint32_t>(rng() % a.num_vars(d)));
+            }
+            break;
+        default:
+            a.add_var(d);
+            a.set_subpart(f, a.add_part(xo),
+                          Value::var(static_cast<std::uint32_t>(a.num_vars(d) - 1)));
+            break;
+        }
+        for (std::uint32_t j = 0; j < a.num_vars(d); ++j) {
+            std::vector<std::pair<std::uint32_t, Part>> expect, found;
+            for (AttrId at : {f, g}) {
+                for (Part p = 0; p < a.num_parts(xo); ++p) {
+                    if (a.subpart(at, p) == Value::var(j)) {
+                        expect.emplace_back(at.index(), p);
+                    }
+                }
+            }
+            for (const auto& c : a.var_incident(d, j)) {
+                found.emplace_back(c.attr.index(), c.part);
+            }
+            std::sort(found.begin(), found.end());
+            ASSERT_EQ(found, expect) << "round " << round << " var " << j;
+        }
+    }
+}
+
+} // namespace
+} // namespace catplan::acset
