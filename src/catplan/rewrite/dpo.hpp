@@ -17,6 +17,7 @@
 //     appended in R's order, kept parts keep their ids unless moved by a pop-and-swap. The planner
 //     uses this. Both give isomorphic results (tested).
 
+#include "catplan/hom/hom_search.hpp"
 #include "catplan/rewrite/rule.hpp"
 
 #include <optional>
@@ -28,6 +29,8 @@ namespace catplan::rewrite {
 struct MatchOptions {
     /// Injective on every object (the planning default); false allows non-monic matches.
     bool monic = true;
+    /// When monic is false: objects on which the match must still be injective.
+    std::vector<ObId> monic_objects;
     /// Parts of L bound in advance (e.g. the arguments of a plan step).
     std::vector<hom::PartBinding> initial;
     /// Stop after this many matches (0 = all).

@@ -17,9 +17,10 @@
 // deleted, since R replaces it.
 //
 // Attribute values of created parts: a constant of R, a value bound through K, or an expression
-// (AttrExpr) computed from the values the match bound to L's variables. A *named* variable of R that
-// none of these binds is a rule-definition error; an unnamed one (an attribute the Eff block left
-// unspecified on a created part) becomes a fresh unknown of the result state.
+// (AttrExpr) computed from the values the match bound to L's variables. A *named* variable of R
+// that none of these binds is a rule-definition error; an unnamed one becomes a fresh unknown (a
+// variable) of the result state. An attribute R leaves unset stays unset on a created part (as in
+// the pushout) and unchanged on a kept part.
 //
 // Negative application conditions L -> N: a match is rejected when it extends along L -> N to a
 // monic N -> X (PDDL's negative preconditions).
@@ -45,12 +46,23 @@ using hom::ACSetMorphism;
 /// match bound to L's variables.
 struct AttrExpr {
     enum class Op : std::uint8_t {
-        Const,  // `constant`
-        Input,  // the value bound to L's variable `input_var` of type `input_type`
-        Add, Sub, Mul, Div, Neg,  // arithmetic on Int/Float (Int if both Int)
-        Concat,                   // string concatenation (`*` in Julia)
-        Not, And, Or,             // Bool
-        Eq, Ne, Lt, Le, Gt, Ge,   // comparisons, giving Bool
+        Const, // `constant`
+        Input, // the value bound to L's variable `input_var` of type `input_type`
+        Add,
+        Sub,
+        Mul,
+        Div,
+        Neg,    // arithmetic on Int/Float (Int if both Int)
+        Concat, // string concatenation (`*` in Julia)
+        Not,
+        And,
+        Or, // Bool
+        Eq,
+        Ne,
+        Lt,
+        Le,
+        Gt,
+        Ge, // comparisons, giving Bool
     };
     Op op = Op::Const;
     Value constant;
@@ -109,9 +121,9 @@ enum class RuleProblemKind {
 
 struct RuleProblem {
     RuleProblemKind kind;
-    AttrTypeId type;        // UnboundVariable, ExprOnBoundVariable
-    std::uint32_t var = 0;  // the variable of R
-    std::string message;    // in words, with names
+    AttrTypeId type;       // UnboundVariable, ExprOnBoundVariable
+    std::uint32_t var = 0; // the variable of R
+    std::string message;   // in words, with names
 };
 
 /// Every problem of a rule's definition (empty when the rule is well formed).

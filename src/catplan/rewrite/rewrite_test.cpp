@@ -1,0 +1,340 @@
+#include "catplan/colimit/colimit.hpp"
+#include "catplan/hom/hom_search.hpp"
+#include "catplan/hom/isomorphism.hpp"
+#include "catplan/rewrite/dpo.hpp"
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+namespace catplan::rewrite {
+namespace {
+
+struct Graphs {
+    std::shared_ptr<schema::Schema> s = std::make_shared<schema::Schema>("WeightedGraph");
+    ObId v = s->add_ob("V");
+    ObId e = s->add_ob("E");
+    HomId src = s->add_hom("src", e, v);
+    HomId tgt = s->add_hom("tgt", e, v);
+    AttrTypeId weight_t = s->add_attr_type("Weight", schema::ValueKind::Int);
+    AttrId weight = s->add_attr("weight", e, weight_t);
+
+    // Catlab's `@acset Graph begin V=n; E=...; src=[...]; tgt=[...] end` (1-based ids).
+    ACSet graph(std::size_t nv, const std::vector<Part>& srcs,
+                const std::vector<Part>& tgts) const {
+        ACSet g(s);
+        g.add_parts(v, nv);
+        for (std::size_t i = 0; i < srcs.size(); ++i) {
+            Part ed = g.add_part(e);
+            g.set_subpart(src, ed, srcs[i] - 1);
+            g.set_subpart(tgt, ed, tgts[i] - 1);
+        }
+        return g;
+    }
+
+    ACSetMorphism map(std::vector<Part> vs, std::vector<Part> es,
+                      std::vector<Value> vars = {}) const {
+        ACSetMorphism f;
+        for (auto& p : vs) {
+            --p;
+        }
+        for (auto& p : es) {
+            --p;
+        }
+        f.components = {std::move(vs), std::move(es)};
+        f.var_components = {std::move(vars)};
+        return f;
+    }
+
+    Rule rule(ACSet l_state, ACSet k_state, ACSet r_state, ACSetMorphism l, ACSetMorphism r) const {
+        Rule rl(s);
+        rl.L = std::move(l_state);
+        rl.K = std::move(k_state);
+        rl.R = std::move(r_state);
+        rl.l = std::move(l);
+        rl.r = std::move(r);
+        return rl;
+    }
+};
+
+// reference §4.3: `is_isomorphic(span_w_arrow, rewrite_match(Rule(L, R), m))` (add a reverse edge).
+TEST(DPO, AddsAReverseEdge) {
+    Graphs g;
+    ACSet i2 = g.graph(2, {}, {});
+    ACSet arr = g.graph(2, {1}, {2});
+    ACSet biarr = g.graph(2, {1, 2}, {2, 1});
+    ACSet span = g.graph(3, {2, 2}, {1, 3});
+    ACSet span_w_arrow = g.graph(3, {1, 1, 2}, {2, 3, 1});
+    Rule rule = g.rule(arr, i2, biarr, g.map({1, 2}, {}), g.map({1, 2}, {}));
+    ASSERT_TRUE(check_rule(rule).empty());
+    auto m = g.map({2, 1}, {1});
+    auto y = rewrite(rule, span, m);
+    ASSERT_TRUE(y.has_value()) << y.error();
+    EXPECT_TRUE(hom::is_isomorphic(span_w_arrow, y->result));
+    ACSet in_place = span;
+    ASSERT_TRUE(rewrite_in_place(rule, in_place, m).has_value());
+    EXPECT_TRUE(hom::is_isomorphic(span_w_arrow, in_place));
+}
+
+// reference §4.3: a non-monic match deletes one loop of two.
+TEST(DPO, DeletesALoopThroughANonMonicMatch) {
+    Graphs g;
+    ACSet i2 = g.graph(2, {}, {});
+    ACSet arr = g.graph(2, {1}, {2});
+    ACSet two_loops = g.graph(2, {1, 2}, {1, 2});
+    ACSet one_loop = g.graph(2, {2}, {2});
+    Rule rule = g.rule(arr, i2, i2, g.map({1, 2}, {}), g.map({1, 2}, {}));
+    auto m = g.map({1, 1}, {1});
+    auto y = rewrite(rule, two_loops, m);
+    ASSERT_TRUE(y.has_value()) << y.error();
+    EXPECT_TRUE(hom::is_isomorphic(one_loop, y->result));
+    EXPECT_FALSE(match_problem(rule, two_loops, m, /*monic=*/false));
+    EXPECT_EQ(*match_problem(rule, two_loops, m, /*monic=*/true), "the match is not monic");
+}
+
+// reference §4.3: two weighted edges merged into one whose weight is their sum, exact result.
+TEST(DPO, ComputesAnAttributeWithAnExpression) {
+    Graphs g;
+    ACSet l_state = g.graph(2, {1, 1}, {2, 2});
+    l_state.set_subpart(g.weight, 0, l_state.add_var(g.weight_t));
+    l_state.set_subpart(g.weight, 1, l_state.add_var(g.weight_t));
+    ACSet i_state = g.graph(2, {}, {});
+    ACSet r_state = g.graph(2, {1}, {2});
+    r_state.set_subpart(g.weight, 0, r_state.add_var(g.weight_t));
+    auto l = hom::find_homomorphism(i_state, l_state,
+                                    hom::HomSearchOptions().bind(g.v, 0, 0).bind(g.v, 1, 1));
+    auto r = hom::find_homomorphism(i_state, r_state,
+                                    hom::HomSearchOptions().bind(g.v, 0, 0).bind(g.v, 1, 1));
+    ASSERT_TRUE(l && r);
+    Rule rule = g.rule(l_state, i_state, r_state, *l, *r);
+    AttrExpr sum{AttrExpr::Op::Add, {}, {}, 0, {}, {}};
+    sum.args.push_back({AttrExpr::Op::Input, {}, g.weight_t, 0, {}, {}});
+    sum.args.push_back({AttrExpr::Op::Input, {}, g.weight_t, 1, {}, {}});
+    rule.exprs = {{sum}};
+    ASSERT_TRUE(check_rule(rule).empty());
+
+    ACSet state = g.graph(1, {1, 1, 1}, {1, 1, 1});
+    for (Part i = 0; i < 3; ++i) {
+        state.set_subpart(g.weight, i, Value::integer(std::array{10, 20, 100}[i]));
+    }
+    MatchOptions opt;
+    opt.monic = false;
+    opt.monic_objects = {g.e};
+    auto matches = find_matches(rule, state, opt);
+    ASSERT_FALSE(matches.empty());
+    auto y = rewrite(rule, state, matches[0]);
+    ASSERT_TRUE(y.has_value()) << y.error();
+    ACSet expected = g.graph(1, {1, 1}, {1, 1});
+    expected.set_subpart(g.weight, 0, Value::integer(30));
+    expected.set_subpart(g.weight, 1, Value::integer(100));
+    EXPECT_EQ(y->result, expected);
+
+    // freevar=true in Catlab: without the expression the new weight is an unknown.
+    rule.exprs.clear();
+    auto z = rewrite(rule, state, matches[0]);
+    ASSERT_TRUE(z.has_value());
+    ACSet expected_var = g.graph(1, {1, 1}, {1, 1});
+    expected_var.set_subpart(g.weight, 0, expected_var.add_var(g.weight_t));
+    expected_var.set_subpart(g.weight, 1, Value::integer(100));
+    EXPECT_EQ(z->result, expected_var);
+}
+
+// reference §4.4: PAC "at least two loops" and NAC "at least four loops" on a vertex match the
+// vertices with two or three loops of two ⊕ three ⊕ two ⊕ four ⊕ five ⊕ one: 3 matches.
+TEST(ApplicationConditions, PositiveAndNegativeConditionsTogether) {
+    Graphs g;
+    auto loops = [&](std::size_t n) {
+        return g.graph(1, std::vector<Part>(n, 1), std::vector<Part>(n, 1));
+    };
+    ACSet state(g.s);
+    for (std::size_t n : {2, 3, 2, 4, 5, 1}) {
+        Part vtx = state.add_part(g.v);
+        for (std::size_t i = 0; i < n; ++i) {
+            Part ed = state.add_part(g.e);
+            state.set_subpart(g.src, ed, vtx);
+            state.set_subpart(g.tgt, ed, vtx);
+        }
+    }
+    ACSet one = g.graph(1, {}, {});
+    Rule rule = g.rule(one, one, one, g.map({1}, {}), g.map({1}, {}));
+    rule.conditions.push_back({"two loops", false, loops(2), g.map({1}, {}), {}});
+    rule.conditions.push_back({"four loops", true, loops(4), g.map({1}, {}), {}});
+    auto matches = find_matches(rule, state);
+    ASSERT_EQ(matches.size(), 3u);
+    EXPECT_EQ(matches[0](g.v, 0), 0u);
+    EXPECT_EQ(matches[1](g.v, 0), 1u);
+    EXPECT_EQ(matches[2](g.v, 0), 2u);
+    auto why = match_problem(rule, state, g.map({4}, {}));
+    ASSERT_TRUE(why.has_value());
+    EXPECT_EQ(*why, "the negative condition 'four loops' holds");
+}
+
+TEST(DPO, DanglingMatchesAreNeverReturnedAndExplained) {
+    Graphs g;
+    // Delete a vertex: only vertices without edges match.
+    ACSet one = g.graph(1, {}, {});
+    ACSet none(g.s);
+    Rule rule = g.rule(one, none, none, g.map({}, {}), g.map({}, {}));
+    ACSet state = g.graph(3, {1}, {2}); // vertex 3 is isolated
+    auto matches = find_matches(rule, state);
+    ASSERT_EQ(matches.size(), 1u);
+    EXPECT_EQ(matches[0](g.v, 0), 2u);
+    EXPECT_EQ(*match_problem(rule, state, g.map({1}, {})),
+              "dangling: E #1 refers through src to V #1, which the rule deletes");
+    EXPECT_FALSE(rewrite(rule, state, g.map({2}, {})).has_value());
+}
+
+TEST(DPO, KeptPartTakesUpdatedAttributeAndRedirectedHom) {
+    // An edge kept by the rule gets a new weight and a new target (unset in K, set in R).
+    Graphs g;
+    ACSet l_state = g.graph(3, {1}, {2});
+    l_state.set_subpart(g.weight, 0, l_state.add_var(g.weight_t));
+    ACSet k_state = g.graph(3, {}, {});
+    Part ke = k_state.add_part(g.e);
+    k_state.set_subpart(g.src, ke, 0); // tgt left unset: redirected
+    k_state.set_subpart(g.weight, ke, k_state.add_var(g.weight_t));
+    ACSet r_state = g.graph(3, {1}, {3});
+    r_state.set_subpart(g.weight, 0, Value::integer(7));
+    Rule rule = g.rule(l_state, k_state, r_state, g.map({1, 2, 3}, {1}, {Value::var(0)}),
+                       g.map({1, 2, 3}, {1}, {Value::integer(7)}));
+    ASSERT_TRUE(check_rule(rule).empty());
+    ACSet state = g.graph(3, {1, 2}, {2, 3});
+    state.set_subpart(g.weight, 0, Value::integer(1));
+    state.set_subpart(g.weight, 1, Value::integer(2));
+    auto m = g.map({1, 2, 3}, {1}, {Value::integer(1)});
+    ASSERT_FALSE(match_problem(rule, state, m));
+    ACSet y = state;
+    ASSERT_TRUE(rewrite_in_place(rule, y, m).has_value());
+    EXPECT_EQ(y.num_parts(g.e), 2u);
+    EXPECT_EQ(y.subpart(g.tgt, 0), 2u);
+    EXPECT_EQ(y.subpart(g.weight, 0), Value::integer(7));
+    EXPECT_EQ(y.subpart(g.weight, 1), Value::integer(2)) << "untouched edge keeps its weight";
+}
+
+TEST(DPO, DropsVariablesItOrphansAndKeepsOthers) {
+    Graphs g;
+    ACSet arr = g.graph(2, {1}, {2});
+    ACSet i2 = g.graph(2, {}, {});
+    Rule rule = g.rule(arr, i2, i2, g.map({1, 2}, {}), g.map({1, 2}, {}));
+    ACSet state = g.graph(2, {1, 2}, {2, 1});
+    state.set_subpart(g.weight, 0, state.add_var(g.weight_t, "a"));
+    state.set_subpart(g.weight, 1, state.add_var(g.weight_t, "b"));
+    ACSet y = state;
+    ASSERT_TRUE(rewrite_in_place(rule, y, g.map({1, 2}, {1})).has_value());
+    ASSERT_EQ(y.num_vars(g.weight_t), 1u);
+    EXPECT_EQ(y.var_name(g.weight_t, 0), "b");
+    EXPECT_EQ(y.subpart(g.weight, 0), Value::var(0));
+}
+
+// ---- properties on seeded random rules and states -------------------------------------------
+
+struct RandomCase {
+    Rule rule;
+    ACSet state;
+};
+
+RandomCase random_case(const Graphs& g, std::mt19937& rng) {
+    auto pick = [&](std::size_t n) { return static_cast<Part>(rng() % n); };
+    // L: 1-3 vertices, 0-3 edges.
+    ACSet l_state(g.s);
+    std::size_t nv = 1 + rng() % 3;
+    l_state.add_parts(g.v, nv);
+    std::size_t ne = rng() % 4;
+    for (std::size_t i = 0; i < ne; ++i) {
+        Part ed = l_state.add_part(g.e);
+        l_state.set_subpart(g.src, ed, pick(nv));
+        l_state.set_subpart(g.tgt, ed, pick(nv));
+    }
+    // K: a sub-graph (kept vertices; kept edges need kept ends); l the inclusion.
+    ACSet k_state(g.s);
+    ACSetMorphism l;
+    l.components.resize(2);
+    l.var_components.resize(1);
+    std::vector<Part> k_of(nv, kNoPart);
+    for (Part p = 0; p < nv; ++p) {
+        if (rng() % 3 != 0) {
+            k_of[p] = k_state.add_part(g.v);
+            l.components[0].push_back(p);
+        }
+    }
+    for (Part ed = 0; ed < ne; ++ed) {
+        Part s0 = k_of[l_state.subpart(g.src, ed)], t0 = k_of[l_state.subpart(g.tgt, ed)];
+        if (s0 != kNoPart && t0 != kNoPart && rng() % 2 == 0) {
+            Part ke = k_state.add_part(g.e);
+            k_state.set_subpart(g.src, ke, s0);
+            k_state.set_subpart(g.tgt, ke, t0);
+            l.components[1].push_back(ed);
+        }
+    }
+    // R: K plus 0-2 vertices and 0-2 edges; r the inclusion.
+    ACSet r_state = k_state;
+    ACSetMorphism r = hom::identity(k_state);
+    std::size_t extra_v = rng() % 3;
+    r_state.add_parts(g.v, extra_v);
+    std::size_t rv = r_state.num_parts(g.v);
+    if (rv > 0) {
+        for (std::size_t i = rng() % 3; i > 0; --i) {
+            Part ed = r_state.add_part(g.e);
+            r_state.set_subpart(g.src, ed, pick(rv));
+            r_state.set_subpart(g.tgt, ed, pick(rv));
+        }
+    }
+    Rule rule = g.rule(std::move(l_state), std::move(k_state), std::move(r_state), l, r);
+    // X: 3-5 vertices, 3-8 edges.
+    std::size_t xv = 3 + rng() % 3;
+    std::vector<Part> srcs, tgts;
+    for (std::size_t i = 3 + rng() % 6; i > 0; --i) {
+        srcs.push_back(pick(xv) + 1);
+        tgts.push_back(pick(xv) + 1);
+    }
+    return {std::move(rule), g.graph(xv, srcs, tgts)};
+}
+
+TEST(DPOProperties, MatchesAreTheMonicHomsThatSatisfyTheGluingConditions) {
+    Graphs g;
+    for (unsigned seed = 1; seed <= 150; ++seed) {
+        SCOPED_TRACE(seed);
+        std::mt19937 rng(seed);
+        auto c = random_case(g, rng);
+        ASSERT_TRUE(check_rule(c.rule).empty());
+        hom::HomSearchOptions monic;
+        monic.monic_all = true;
+        std::size_t expected = 0;
+        for (const auto& m : hom::find_homomorphisms(c.rule.L, c.state, monic).morphisms) {
+            if (colimit::gluing_violations(c.rule.K, c.rule.L, c.state, c.rule.l, m).empty()) {
+                ++expected;
+            }
+        }
+        EXPECT_EQ(find_matches(c.rule, c.state).size(), expected);
+    }
+}
+
+TEST(DPOProperties, ResultIsThePushoutOfTheComplementAndBothApplicationsAgree) {
+    Graphs g;
+    int checked = 0;
+    for (unsigned seed = 1; seed <= 150; ++seed) {
+        SCOPED_TRACE(seed);
+        std::mt19937 rng(seed);
+        auto c = random_case(g, rng);
+        for (const auto& m : find_matches(c.rule, c.state)) {
+            auto pc = colimit::pushout_complement(c.rule.K, c.rule.L, c.state, c.rule.l, m);
+            ASSERT_TRUE(pc.has_value()) << pc.error();
+            auto po = colimit::pushout(c.rule.K, c.rule.R, pc->z, c.rule.r, pc->k_to_z);
+            ASSERT_TRUE(po.has_value()) << po.error();
+            auto y = rewrite(c.rule, c.state, m);
+            ASSERT_TRUE(y.has_value()) << y.error();
+            EXPECT_TRUE(hom::is_isomorphic(po->apex, y->result));
+            EXPECT_TRUE(hom::is_natural(y->r_to_result, c.rule.R, y->result));
+            ACSet in_place = c.state;
+            auto r_to_x = rewrite_in_place(c.rule, in_place, m);
+            ASSERT_TRUE(r_to_x.has_value());
+            EXPECT_TRUE(hom::is_natural(*r_to_x, c.rule.R, in_place));
+            EXPECT_TRUE(hom::is_isomorphic(in_place, y->result));
+            ++checked;
+        }
+    }
+    EXPECT_GT(checked, 50);
+}
+
+} // namespace
+} // namespace catplan::rewrite
