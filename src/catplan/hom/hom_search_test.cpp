@@ -382,5 +382,29 @@ TEST(HomSearchCSet, CompositeKeyLookupKeepsTheSearchSmall) {
     EXPECT_LT(r.stats.nodes, 20000u); // about 9000; trying every edge would be 900000
 }
 
+// A small pattern in a large state takes the sparse paths of the engine (injectivity by a scan,
+// no composite-key index); the counts must not change.
+TEST(HomSearchLarge, SmallPatternInALargeStateCountsExactly) {
+    std::vector<std::pair<Part, Part>> edges;
+    Part n = 0;
+    for (int t = 0; t < 1000; ++t, n += 3) {
+        edges.push_back({n, n + 1});
+        edges.push_back({n + 1, n + 2});
+        edges.push_back({n + 2, n});
+    }
+    for (int l = 0; l < 500; ++l, ++n) {
+        edges.push_back({n, n});
+    }
+    ACSet big = make_graph(n, edges);
+    ACSet c3 = cycle_graph(3);
+    HomSearchOptions monic;
+    monic.monic_all = true;
+    EXPECT_EQ(count_homomorphisms(c3, big, monic).count, 3000u);
+    EXPECT_EQ(count_homomorphisms(c3, big).count, 3500u);
+    HomSearchOptions bound = monic;
+    bound.bind(ObId(0), 0, 3); // vertex a at the first vertex of the second triangle
+    EXPECT_EQ(count_homomorphisms(c3, big, bound).count, 1u);
+}
+
 } // namespace
 } // namespace catplan::hom

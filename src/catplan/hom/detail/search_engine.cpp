@@ -82,6 +82,7 @@ public:
 private:
     bool prepare();
     bool assign(std::uint32_t ob, Part x, Part y);
+    bool taken(std::uint32_t ob, Part y) const;
     bool bind_var(std::uint32_t t, std::uint32_t v, const Value& value);
     void undo(std::size_t mark);
     bool search();
@@ -103,6 +104,8 @@ private:
 
     std::vector<std::vector<Part>> assign_; // per object: image of each domain part
     std::vector<std::vector<Part>> inv_;    // per monic object: preimage of each codom part
+    std::vector<char> dense_inv_;           // per monic object: inv_ is used (else a scan)
+    std::vector<std::uint64_t> key_wanted_; // per object: lookups that a key index would serve
     std::vector<char> monic_;               // per object
     std::vector<std::vector<std::vector<Part>>> cand_; // per object, per part: sorted allowed
     std::vector<char> has_cand_;                       // per object: any candidate set given
@@ -177,6 +180,14 @@ bool Engine::bind_var(std::uint32_t t, std::uint32_t v, const Value& value) {
     return true;
 }
 
+bool Engine::taken(std::uint32_t ob, Part y) const {
+    if (dense_inv_[ob]) {
+        return inv_[ob][y] != kNoPart;
+    }
+    const auto& a = assign_[ob];
+    return std::find(a.begin(), a.end(), y) != a.end();
+}
+
 bool Engine::assign(std::uint32_t ob, Part x, Part y) {
     Part cur = assign_[ob][x];
     if (cur != kNoPart) {
@@ -188,7 +199,7 @@ bool Engine::assign(std::uint32_t ob, Part x, Part y) {
             return false;
         }
     }
-    if (monic_[ob] && inv_[ob][y] != kNoPart) {
+    if (monic_[ob] && taken(ob, y)) {
         return false;
     }
     if (opt_.accept && !opt_.accept(ObId(ob), x, y)) {
@@ -215,7 +226,7 @@ bool Engine::assign(std::uint32_t ob, Part x, Part y) {
         }
     }
     assign_[ob][x] = y;
-    if (monic_[ob]) {
+    if (monic_[ob] && dense_inv_[ob]) {
         inv_[ob][y] = x;
     }
     trail_.push_back({false, ob, x});
@@ -249,7 +260,7 @@ void Engine::undo(std::size_t mark) {
             b = Value();
         } else {
             Part& y = assign_[e.a][e.b];
-            if (monic_[e.a]) {
+            if (monic_[e.a] && dense_inv_[e.a]) {
                 inv_[e.a][y] = kNoPart;
             }
             y = kNoPart;
@@ -274,6 +285,12 @@ std::size_t Engine::estimate(std::uint32_t ob, Part x, Source& src) {
             all_assigned = false;
             break;
         }
+    }
+    // The composite-key index costs O(|Y| log |Y|) to build: build it once enough lookups would
+    // use it (triangle counting: at once; one rule match in a large state: never).
+    if (all_assigned && homs.size() >= 2 && !keys_[ob].built &&
+        ++key_wanted_[ob] * 8 < y_.num_parts(ObId(ob))) {
+        all_assigned = false;
     }
     if (all_assigned && homs.size() >= 2) {
         std::uint64_t h = 0x51ed270b27e1f2c3ULL;
@@ -490,6 +507,8 @@ bool Engine::prepare() {
     }
     assign_.resize(nobs);
     inv_.resize(nobs);
+    dense_inv_.assign(nobs, 0);
+    key_wanted_.assign(nobs, 0);
     cand_.resize(nobs);
     has_cand_.assign(nobs, 0);
     keys_.resize(nobs);
@@ -498,8 +517,12 @@ bool Engine::prepare() {
         assign_[ob].assign(x_.num_parts(ObId(ob)), kNoPart);
         total += assign_[ob].size();
         unassigned_ += assign_[ob].size();
-        if (monic_[ob]) {
-            inv_[ob].assign(y_.num_parts(ObId(ob)), kNoPart);
+        // A dense inverse costs O(|Y|) to set up; when the pattern is small next to the state
+        // (matching a rule in a large state), checking injectivity by a scan is cheaper.
+        std::size_t nx = x_.num_parts(ObId(ob)), ny = y_.num_parts(ObId(ob));
+        if (monic_[ob] && (nx > 16 || ny <= 64 * (nx + 1))) {
+            dense_inv_[ob] = 1;
+            inv_[ob].assign(ny, kNoPart);
         }
     }
     vbind_.resize(ntypes);
