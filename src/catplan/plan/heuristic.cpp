@@ -1,0 +1,555 @@
+#include "catplan/plan/heuristic.hpp"
+
+#include "catplan/base/hash.hpp"
+
+#include <algorithm>
+#include <functional>
+#include <limits>
+#include <queue>
+#include <unordered_map>
+#include <unordered_set>
+
+namespace catplan::plan {
+
+std::optional<HeuristicKind> parse_heuristic(std::string_view name) {
+    if (name == "blind") {
+        return HeuristicKind::Blind;
+    }
+    if (name == "goalcount") {
+        return HeuristicKind::GoalCount;
+    }
+    if (name == "hadd") {
+        return HeuristicKind::HAdd;
+    }
+    if (name == "hff") {
+        return HeuristicKind::HFF;
+    }
+    return std::nullopt;
+}
+
+std::string_view to_string(HeuristicKind kind) {
+    switch (kind) {
+    case HeuristicKind::Blind:
+        return "blind";
+    case HeuristicKind::GoalCount:
+        return "goalcount";
+    case HeuristicKind::HAdd:
+        return "hadd";
+    case HeuristicKind::HFF:
+        return "hff";
+    }
+    CATPLAN_UNREACHABLE("heuristic kind");
+}
+
+namespace {
+
+using acset::Value;
+
+// One position of a fact: unknown (a wildcard), an entity slot of a rule, or a known value (an
+// entity's part id or an attribute value's hash).
+struct Pos {
+    enum class Kind : std::uint8_t { Wild, Slot, Const };
+    Kind kind = Kind::Wild;
+    std::uint64_t value = 0;
+
+    friend bool operator==(const Pos&, const Pos&) = default;
+};
+
+struct Fact {
+    std::uint32_t type = 0;
+    std::vector<Pos> pos;
+
+    friend bool operator==(const Fact&, const Fact&) = default;
+};
+
+std::uint64_t mask_of(const Fact& f) {
+    std::uint64_t m = 0;
+    for (std::size_t i = 0; i < f.pos.size() && i < 64; ++i) {
+        if (f.pos[i].kind != Pos::Kind::Wild) {
+            m |= std::uint64_t{1} << i;
+        }
+    }
+    return m;
+}
+
+// The key of a fact's projection onto a mask (all Const at the mask's positions).
+std::uint64_t key_of(std::uint32_t type, std::uint64_t mask, const std::vector<Pos>& pos) {
+    std::uint64_t h = hash_combine(hash_mix(type), mask);
+    for (std::size_t i = 0; i < pos.size() && i < 64; ++i) {
+        if (mask >> i & 1) {
+            h = hash_combine(h, pos[i].value);
+        }
+    }
+    return h;
+}
+
+// The fact abstraction of a problem and its ground relaxed actions (heuristic.hpp).
+class RelaxedTask {
+public:
+    explicit RelaxedTask(const Problem& problem) : schema_(problem.initial->schema_ptr()) {
+        classify(problem);
+        // Templates of every rule, and the goal's facts; their masks are the projections in use.
+        for (const auto& rule : problem.domain->rules) {
+            templates_.push_back(make_template(*rule));
+        }
+        std::vector<Fact> goal_facts;
+        if (problem.goal) {
+            const ACSet& g = *problem.goal;
+            const ACSet& init = *problem.initial;
+            goal_facts = facts_of(g, [&](ObId ob, Part p) {
+                auto name = g.part_name(ob, p);
+                std::optional<Part> q;
+                if (!name.empty()) {
+                    q = init.find_part(ob, name);
+                }
+                return q ? Pos{Pos::Kind::Const, *q} : Pos{};
+            });
+        }
+        masks_.assign(num_types(), {});
+        for (const auto& t : templates_) {
+            for (const auto& f : t.pre) {
+                add_mask(f);
+            }
+        }
+        for (const auto& f : goal_facts) {
+            add_mask(f);
+        }
+        // Types some rule adds to; the others keep their initial facts forever.
+        dynamic_.assign(num_types(), false);
+        for (const auto& t : templates_) {
+            for (const auto& f : t.add) {
+                dynamic_[f.type] = true;
+            }
+        }
+        for (const auto& f : state_facts(*problem.initial)) {
+            if (!dynamic_[f.type]) {
+                for (std::uint64_t m : masks_[f.type]) {
+                    if ((mask_of(f) & m) == m) {
+                        initial_static_.insert(key_of(f.type, m, f.pos));
+                    }
+                }
+            }
+        }
+        for (const auto& f : goal_facts) {
+            goal_.push_back(prop(key_of(f.type, mask_of(f), f.pos)));
+        }
+        std::sort(goal_.begin(), goal_.end());
+        goal_.erase(std::unique(goal_.begin(), goal_.end()), goal_.end());
+        ground(*problem.initial);
+    }
+
+    std::size_t num_props() const { return num_props_; }
+
+    const std::vector<std::uint32_t>& goal() const { return goal_; }
+
+    // The props true in x (projections of its facts that some precondition or goal uses).
+    void props_of(const ACSet& x, std::vector<char>& truth) const {
+        truth.assign(num_props_, 0);
+        for (const auto& f : state_facts(x)) {
+            std::uint64_t fm = mask_of(f);
+            for (std::uint64_t m : masks_[f.type]) {
+                if ((fm & m) == m) {
+                    auto it = props_.find(key_of(f.type, m, f.pos));
+                    if (it != props_.end()) {
+                        truth[it->second] = 1;
+                    }
+                }
+            }
+        }
+    }
+
+    struct Action {
+        std::vector<std::uint32_t> pre, add;
+    };
+
+    const std::vector<Action>& actions() const { return actions_; }
+
+    const std::vector<std::vector<std::uint32_t>>& pre_of() const { return pre_of_; }
+
+private:
+    struct Template {
+        std::vector<ObId> slot_obs; // the object of each entity slot (L's entity parts)
+        std::vector<Fact> pre, add; // add: R's facts that are not already L's
+    };
+
+    std::uint32_t num_types() const {
+        const auto& s = *schema_;
+        return static_cast<std::uint32_t>(s.num_obs() + s.num_homs() + s.num_attrs());
+    }
+
+    void classify(const Problem& problem) {
+        const auto& s = *schema_;
+        entity_.assign(s.num_obs(), true);
+        for (const auto& rule : problem.domain->rules) {
+            for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
+                ObId ob(o);
+                std::size_t nk = rule->K.num_parts(ob);
+                std::vector<bool> hit(rule->R.num_parts(ob), false);
+                bool injective = true;
+                for (Part k = 0; k < nk; ++k) {
+                    Part q = rule->r(ob, k);
+                    injective = injective && !hit[q];
+                    hit[q] = true;
+                }
+                if (rule->L.num_parts(ob) != nk || rule->R.num_parts(ob) != nk || !injective) {
+                    entity_[o] = false;
+                }
+            }
+        }
+    }
+
+    // The facts of a state or pattern; `entity` says what an entity part becomes.
+    std::vector<Fact> facts_of(const ACSet& a, const std::function<Pos(ObId, Part)>& entity) const {
+        const auto& s = *schema_;
+        std::vector<Fact> facts;
+        auto value_pos = [](const Value& v) {
+            return v.is_concrete() ? Pos{Pos::Kind::Const, v.hash()} : Pos{};
+        };
+        for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
+            ObId ob(o);
+            for (Part p = 0; p < a.num_parts(ob); ++p) {
+                if (!entity_[o]) {
+                    Fact f{o, {}};
+                    for (HomId h : s.homs_from(ob)) {
+                        ObId cod = s.hom(h).codom;
+                        if (!entity_[cod.index()]) {
+                            continue;
+                        }
+                        Part q = a.subpart(h, p);
+                        f.pos.push_back(q == kNoPart ? Pos{} : entity(cod, q));
+                    }
+                    for (AttrId at : s.attrs_from(ob)) {
+                        f.pos.push_back(value_pos(a.subpart(at, p)));
+                    }
+                    facts.push_back(std::move(f));
+                    continue;
+                }
+                for (HomId h : s.homs_from(ob)) {
+                    ObId cod = s.hom(h).codom;
+                    Part q = a.subpart(h, p);
+                    if (entity_[cod.index()] && q != kNoPart) {
+                        facts.push_back({static_cast<std::uint32_t>(s.num_obs() + h.index()),
+                                         {entity(ob, p), entity(cod, q)}});
+                    }
+                }
+                for (AttrId at : s.attrs_from(ob)) {
+                    const Value& v = a.subpart(at, p);
+                    if (v.is_concrete()) {
+                        facts.push_back(
+                            {static_cast<std::uint32_t>(s.num_obs() + s.num_homs() + at.index()),
+                             {entity(ob, p), value_pos(v)}});
+                    }
+                }
+            }
+        }
+        return facts;
+    }
+
+    std::vector<Fact> state_facts(const ACSet& x) const {
+        return facts_of(x, [](ObId, Part p) { return Pos{Pos::Kind::Const, p}; });
+    }
+
+    Template make_template(const Rule& rule) const {
+        const auto& s = *schema_;
+        Template t;
+        std::vector<std::vector<std::uint64_t>> slot(s.num_obs());
+        for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
+            if (!entity_[o]) {
+                continue;
+            }
+            for (Part p = 0; p < rule.L.num_parts(ObId(o)); ++p) {
+                slot[o].push_back(t.slot_obs.size());
+                t.slot_obs.push_back(ObId(o));
+            }
+        }
+        t.pre = facts_of(rule.L, [&](ObId ob, Part p) {
+            return Pos{Pos::Kind::Slot, slot[ob.index()][p]};
+        });
+        // R's entity parts come from K (entity objects are never created): R -> K -> L.
+        std::vector<std::vector<std::uint64_t>> r_slot(s.num_obs());
+        for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
+            if (!entity_[o]) {
+                continue;
+            }
+            r_slot[o].assign(rule.R.num_parts(ObId(o)), 0);
+            for (Part k = 0; k < rule.K.num_parts(ObId(o)); ++k) {
+                r_slot[o][rule.r(ObId(o), k)] = slot[o][rule.l(ObId(o), k)];
+            }
+        }
+        for (auto& f : facts_of(rule.R, [&](ObId ob, Part p) {
+                 return Pos{Pos::Kind::Slot, r_slot[ob.index()][p]};
+             })) {
+            if (std::find(t.pre.begin(), t.pre.end(), f) == t.pre.end()) {
+                t.add.push_back(std::move(f));
+            }
+        }
+        return t;
+    }
+
+    void add_mask(const Fact& f) {
+        auto& ms = masks_[f.type];
+        std::uint64_t m = mask_of(f);
+        if (std::find(ms.begin(), ms.end(), m) == ms.end()) {
+            ms.push_back(m);
+        }
+    }
+
+    std::uint32_t prop(std::uint64_t key) {
+        auto [it, inserted] = props_.try_emplace(key, static_cast<std::uint32_t>(num_props_));
+        if (inserted) {
+            ++num_props_;
+        }
+        return it->second;
+    }
+
+    static std::vector<Pos> instantiate(const Fact& f, const std::vector<Part>& assignment) {
+        std::vector<Pos> pos = f.pos;
+        for (auto& p : pos) {
+            if (p.kind == Pos::Kind::Slot) {
+                p = Pos{Pos::Kind::Const, assignment[p.value]};
+            }
+        }
+        return pos;
+    }
+
+    // Every injective assignment of each rule's entity slots to the initial state's entities
+    // whose static preconditions hold initially; then the adds, once every needed prop exists.
+    void ground(const ACSet& initial) {
+        struct Pending {
+            std::size_t rule;
+            std::vector<Part> assignment;
+        };
+
+        std::vector<Pending> pending;
+        for (std::size_t ri = 0; ri < templates_.size(); ++ri) {
+            const auto& t = templates_[ri];
+            // The static preconditions checkable once slot i is assigned (their last slot).
+            std::vector<std::vector<const Fact*>> checks(t.slot_obs.size() + 1);
+            for (const auto& f : t.pre) {
+                if (dynamic_[f.type]) {
+                    continue;
+                }
+                std::size_t last = 0;
+                for (const auto& p : f.pos) {
+                    if (p.kind == Pos::Kind::Slot) {
+                        last = std::max<std::size_t>(last, p.value + 1);
+                    }
+                }
+                checks[last].push_back(&f);
+            }
+            auto holds = [&](std::size_t level, const std::vector<Part>& a) {
+                for (const Fact* f : checks[level]) {
+                    if (!initial_static_.contains(
+                            key_of(f->type, mask_of(*f), instantiate(*f, a)))) {
+                        return false;
+                    }
+                }
+                return true;
+            };
+            std::vector<Part> a(t.slot_obs.size(), kNoPart);
+            std::function<void(std::size_t)> assign = [&](std::size_t i) {
+                if (i == a.size()) {
+                    pending.push_back({ri, a});
+                    return;
+                }
+                for (Part p = 0; p < initial.num_parts(t.slot_obs[i]); ++p) {
+                    bool used = false;
+                    for (std::size_t j = 0; j < i; ++j) {
+                        used = used || (t.slot_obs[j] == t.slot_obs[i] && a[j] == p);
+                    }
+                    if (used) {
+                        continue;
+                    }
+                    a[i] = p;
+                    if (holds(i + 1, a)) {
+                        assign(i + 1);
+                    }
+                }
+                a[i] = kNoPart;
+            };
+            if (holds(0, a)) {
+                assign(0);
+            }
+        }
+        for (const auto& pa : pending) {
+            Action act;
+            for (const auto& f : templates_[pa.rule].pre) {
+                if (dynamic_[f.type]) {
+                    act.pre.push_back(
+                        prop(key_of(f.type, mask_of(f), instantiate(f, pa.assignment))));
+                }
+            }
+            std::sort(act.pre.begin(), act.pre.end());
+            act.pre.erase(std::unique(act.pre.begin(), act.pre.end()), act.pre.end());
+            actions_.push_back(std::move(act));
+        }
+        for (std::size_t i = 0; i < pending.size(); ++i) {
+            auto& act = actions_[i];
+            for (const auto& f : templates_[pending[i].rule].add) {
+                auto pos = instantiate(f, pending[i].assignment);
+                Fact g{f.type, pos};
+                std::uint64_t fm = mask_of(g);
+                for (std::uint64_t m : masks_[f.type]) {
+                    if ((fm & m) == m) {
+                        auto it = props_.find(key_of(f.type, m, pos));
+                        if (it != props_.end()) {
+                            act.add.push_back(it->second);
+                        }
+                    }
+                }
+            }
+            std::sort(act.add.begin(), act.add.end());
+            act.add.erase(std::unique(act.add.begin(), act.add.end()), act.add.end());
+        }
+        pre_of_.assign(num_props_, {});
+        for (std::uint32_t a = 0; a < actions_.size(); ++a) {
+            for (std::uint32_t p : actions_[a].pre) {
+                pre_of_[p].push_back(a);
+            }
+        }
+    }
+
+    schema::SchemaPtr schema_;
+    std::vector<bool> entity_;
+    std::vector<Template> templates_;
+    std::vector<std::vector<std::uint64_t>> masks_;
+    std::vector<bool> dynamic_;
+    std::unordered_set<std::uint64_t> initial_static_;
+    std::unordered_map<std::uint64_t, std::uint32_t> props_;
+    std::size_t num_props_ = 0;
+    std::vector<std::uint32_t> goal_;
+    std::vector<Action> actions_;
+    std::vector<std::vector<std::uint32_t>> pre_of_;
+};
+
+class Blind final : public Heuristic {
+public:
+    int evaluate(const ACSet&) override { return 0; }
+};
+
+class GoalCount final : public Heuristic {
+public:
+    explicit GoalCount(const Problem& p) : task_(p) {}
+
+    int evaluate(const ACSet& x) override {
+        task_.props_of(x, truth_);
+        int h = 0;
+        for (auto g : task_.goal()) {
+            h += truth_[g] ? 0 : 1;
+        }
+        return h;
+    }
+
+private:
+    RelaxedTask task_;
+    std::vector<char> truth_;
+};
+
+// h_add by a generalised Dijkstra over props; h_FF marks the best supporters' relaxed plan.
+class Additive final : public Heuristic {
+public:
+    Additive(const Problem& p, bool ff) : task_(p), ff_(ff) {}
+
+    int evaluate(const ACSet& x) override {
+        constexpr int kInf = std::numeric_limits<int>::max();
+        const auto& actions = task_.actions();
+        task_.props_of(x, truth_);
+        cost_.assign(task_.num_props(), kInf);
+        supporter_.assign(task_.num_props(), UINT32_MAX);
+        unsat_.resize(actions.size());
+        sum_.assign(actions.size(), 0);
+        using Item = std::pair<int, std::uint32_t>;
+        std::priority_queue<Item, std::vector<Item>, std::greater<>> queue;
+        for (std::uint32_t p = 0; p < truth_.size(); ++p) {
+            if (truth_[p]) {
+                cost_[p] = 0;
+                queue.push({0, p});
+            }
+        }
+        auto fire = [&](std::uint32_t a) {
+            int c = 1 + sum_[a];
+            for (std::uint32_t q : actions[a].add) {
+                if (c < cost_[q]) {
+                    cost_[q] = c;
+                    supporter_[q] = a;
+                    queue.push({c, q});
+                }
+            }
+        };
+        for (std::uint32_t a = 0; a < actions.size(); ++a) {
+            unsat_[a] = static_cast<std::uint32_t>(actions[a].pre.size());
+            if (unsat_[a] == 0) {
+                fire(a);
+            }
+        }
+        while (!queue.empty()) {
+            auto [c, p] = queue.top();
+            queue.pop();
+            if (c > cost_[p]) {
+                continue;
+            }
+            for (std::uint32_t a : task_.pre_of()[p]) {
+                sum_[a] = std::min(sum_[a] + c, kDeadEnd);
+                if (--unsat_[a] == 0) {
+                    fire(a);
+                }
+            }
+        }
+        long total = 0;
+        for (auto g : task_.goal()) {
+            if (cost_[g] == kInf) {
+                return kDeadEnd;
+            }
+            total += cost_[g];
+        }
+        if (!ff_) {
+            return static_cast<int>(std::min<long>(total, kDeadEnd - 1));
+        }
+        // The relaxed plan: the best supporter of each goal prop, then of their preconditions.
+        in_plan_.assign(actions.size(), false);
+        std::vector<std::uint32_t> stack(task_.goal().begin(), task_.goal().end());
+        marked_.assign(task_.num_props(), false);
+        int count = 0;
+        while (!stack.empty()) {
+            std::uint32_t p = stack.back();
+            stack.pop_back();
+            if (marked_[p] || cost_[p] == 0) {
+                continue;
+            }
+            marked_[p] = true;
+            std::uint32_t a = supporter_[p];
+            if (!in_plan_[a]) {
+                in_plan_[a] = true;
+                ++count;
+                stack.insert(stack.end(), actions[a].pre.begin(), actions[a].pre.end());
+            }
+        }
+        return count;
+    }
+
+private:
+    RelaxedTask task_;
+    bool ff_;
+    std::vector<char> truth_;
+    std::vector<int> cost_, sum_;
+    std::vector<std::uint32_t> supporter_, unsat_;
+    std::vector<bool> in_plan_, marked_;
+};
+
+} // namespace
+
+std::unique_ptr<Heuristic> make_heuristic(HeuristicKind kind, const Problem& problem) {
+    switch (kind) {
+    case HeuristicKind::Blind:
+        return std::make_unique<Blind>();
+    case HeuristicKind::GoalCount:
+        return std::make_unique<GoalCount>(problem);
+    case HeuristicKind::HAdd:
+        return std::make_unique<Additive>(problem, false);
+    case HeuristicKind::HFF:
+        return std::make_unique<Additive>(problem, true);
+    }
+    CATPLAN_UNREACHABLE("heuristic kind");
+}
+
+} // namespace catplan::plan

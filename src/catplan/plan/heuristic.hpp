@@ -1,0 +1,59 @@
+#pragma once
+// Heuristics for the planner: estimates of the number of steps from a state to the goal.
+//
+// The abstraction (computed once per problem from the rules' L and R and the goal):
+//   - An *entity object* is one no rule creates, deletes or merges (every part of it in L and R
+//     comes from K, injectively): Block in the blocks worlds. Its parts are the same in every
+//     reachable state and keep their ids (rewriting never moves a part of an object it does not
+//     delete from), so a part id names the same entity in every state.
+//   - A *fact* is a part of any other object (a predicate object: On, IsClear, Gripper) seen as its
+//     tuple of hom values into entities and concrete attribute values; or a hom value between two
+//     entities; or a concrete attribute value of an entity. Hom values into non-entity parts and
+//     unknown values are dropped (wildcards).
+//   - A precondition or goal fact with wildcards is satisfied by any fact that agrees on its other
+//     positions (each fact is projected onto every wildcard pattern in use).
+//   - Each rule is grounded by giving its L entity parts distinct entities (facts that no rule adds
+//     are checked against the initial state during grounding); a ground action needs the facts of L
+//     and adds the facts of R, at cost 1. Deletions are ignored (delete relaxation).
+//   - Goal entities are identified with the initial state's entities by name; a goal entity without
+//     a name (or with a name not in the initial state) is a wildcard.
+//
+// Heuristics:
+//   blind      0 everywhere (A* becomes uniform-cost search).
+//   goalcount  the number of goal facts absent from the state.
+//   hadd       h_add: the sum over goal facts of their relaxed costs (Bonet & Geffner).
+//   hff        h_FF: the size of the relaxed plan extracted from h_add's best supporters
+//   (Hoffmann).
+// None is admissible in general (goalcount is when each step adds at most one goal fact); a state
+// whose goal facts are unreachable in the relaxation gets kDeadEnd, which the search does not
+// prune (the abstraction can be wrong where wildcards hide information) but expands last.
+
+#include "catplan/plan/domain.hpp"
+
+#include <memory>
+#include <optional>
+#include <string_view>
+
+namespace catplan::plan {
+
+enum class HeuristicKind { Blind, GoalCount, HAdd, HFF };
+
+/// "blind", "goalcount", "hadd" or "hff"; nullopt for another name.
+std::optional<HeuristicKind> parse_heuristic(std::string_view name);
+/// The name parse_heuristic reads.
+std::string_view to_string(HeuristicKind kind);
+
+/// The value of a state from which the relaxation cannot reach the goal.
+inline constexpr int kDeadEnd = 1'000'000;
+
+class Heuristic {
+public:
+    virtual ~Heuristic() = default;
+    /// The estimate for state x (0 .. kDeadEnd).
+    virtual int evaluate(const ACSet& x) = 0;
+};
+
+/// A heuristic of this kind for the problem (its domain's rules, initial state and goal).
+std::unique_ptr<Heuristic> make_heuristic(HeuristicKind kind, const Problem& problem);
+
+} // namespace catplan::plan
