@@ -1,0 +1,82 @@
+#pragma once
+// Graphviz DOT pictures of schemas, states, rules and morphisms, for people to look at
+// (`dot -Tsvg picture.dot > picture.svg`).
+//
+//   schema     objects as boxes, homs as solid labelled edges, attribute types as ellipses and
+//              attributes as dashed labelled edges (the paper's schema figures)
+//   state      one cluster per object that has parts; a part is a node labelled by its name (or
+//              #k, 1-based) with one row per attribute value; homs are labelled edges
+//   rule       Pre ← Keep → Eff side by side, each drawn like a state, with l and r as dashed
+//              gray edges from each Keep part to its images
+//   morphism   domain and codomain side by side, a dashed edge from each part to its image
+//
+// Two readability heuristics for blocks-like domains, both on by default (DotOptions):
+//   relation edges   an object with exactly two homs, no attributes and no homs into it (a binary
+//                    relation such as On(on_l, on_r)) is drawn as one edge from a part's first
+//                    target to its second, labelled "On x1", instead of a node with two edges.
+//                    In rule and morphism pictures this applies only to objects of which the
+//                    source of the maps (Keep, the domain) has no parts, so that every map edge
+//                    has a node at each end. A part with an unset hom is drawn as a node.
+//   predicate rows   an object with exactly one hom, at least one attribute and no homs into it
+//                    (a predicate object such as IsClear(isClearDom, isClear) in the slides'
+//                    form) whose hom points at a part drawn as a node is drawn as a row
+//                    "isClear = true" of that node. Map edges attach to the row.
+//
+// Output is deterministic: objects, homs and attributes in declaration order, parts in part
+// order. Node ids are stable and readable: `Block_3` is part 3 (1-based) of Block; in rule and
+// morphism pictures they carry the panel's name (`Pre_Block_3`, `dom_Block_3`). Unset attribute
+// cells are not shown; attribute variables are shown as ?name or ?k.
+
+#include "catplan/acset/acset.hpp"
+#include "catplan/hom/morphism.hpp"
+#include "catplan/rewrite/rule.hpp"
+#include "catplan/schema/schema.hpp"
+
+#include <string>
+#include <string_view>
+
+namespace catplan::dot {
+
+struct DotOptions {
+    /// Lay states and schemas out left to right (rankdir=LR) instead of top to bottom. Rule and
+    /// morphism pictures always put their panels side by side.
+    bool left_to_right = false;
+    /// Draw binary relation objects as one edge per part (see the header comment).
+    bool relation_edges = true;
+    /// Draw predicate objects as rows of the node they point at (see the header comment).
+    bool predicate_rows = true;
+    /// Prefix each folded predicate row with the predicate part's name, when it has one.
+    bool predicate_part_names = false;
+    /// The font of every label.
+    std::string font = "Helvetica";
+};
+
+/// A DOT digraph of a schema: objects, homs, attribute types and attributes, plus a note listing
+/// the equations when there are any.
+std::string schema_to_dot(const schema::Schema& s, const DotOptions& options = {});
+
+/// A DOT digraph of a state, titled `name`, with one cluster per object that has parts.
+std::string state_to_dot(const acset::ACSet& x, std::string_view name,
+                         const DotOptions& options = {});
+
+/// A DOT digraph of a rule: clusters Pre, Keep and Eff (and one per application condition) with
+/// the maps between them as dashed edges.
+std::string rule_to_dot(const rewrite::Rule& r, const DotOptions& options = {});
+
+/// A DOT digraph of a morphism f : dom -> codom, titled `name`. f's components must have one
+/// entry per part of dom and images in codom (asserted); naturality is not required.
+std::string morphism_to_dot(const hom::ACSetMorphism& f, const acset::ACSet& dom,
+                            const acset::ACSet& codom, std::string_view name,
+                            const DotOptions& options = {});
+
+/// `s` as a DOT ID: bare when it is a plain identifier (letters, digits, '_', not starting with
+/// a digit, not a keyword), otherwise a quoted string with '"' and '\' escaped.
+std::string dot_id(std::string_view s);
+
+/// `s` as the text of a quoted DOT string: '"' and '\' escaped, a newline as "\n".
+std::string escape_quoted(std::string_view s);
+
+/// `s` as text inside an HTML-like DOT label: & < > " escaped as entities, a newline as <BR/>.
+std::string escape_html(std::string_view s);
+
+} // namespace catplan::dot
