@@ -188,10 +188,13 @@ public:
         }
         for (std::uint32_t i = 0; i < s_.num_obs(); ++i) {
             ObId ob(i);
+            // One row per attribute of the part itself: long values stay readable.
             for (Part p = 0; p < x_.num_parts(ob); ++p) {
-                std::string text = attr_text(ob, p);
-                if (!text.empty()) {
-                    rows_[i][p].push_back({"", std::move(text), ""});
+                for (AttrId a : s_.attrs_from(ob)) {
+                    std::string text = attr_text(p, a);
+                    if (!text.empty()) {
+                        rows_[i][p].push_back({"", std::move(text), ""});
+                    }
                 }
             }
         }
@@ -292,19 +295,24 @@ private:
         return s_.ob(ob).name + "_" + std::to_string(p + 1);
     }
 
+    /// "a = v" for one attribute of a part, escaped for HTML; "" when the cell is unset.
+    std::string attr_text(Part p, AttrId a) const {
+        const Value& v = x_.subpart(a, p);
+        if (v.is_unset()) {
+            return {};
+        }
+        return escape_html(
+            fmt::format("{} = {}", s_.attr(a).name, x_.value_label(s_.attr(a).codom, v)));
+    }
+
     /// "a = v, b = w" for the set attributes of a part, escaped for HTML; "" when none is set.
     std::string attr_text(ObId ob, Part p) const {
         std::string text;
         for (AttrId a : s_.attrs_from(ob)) {
-            const Value& v = x_.subpart(a, p);
-            if (v.is_unset()) {
-                continue;
+            std::string one = attr_text(p, a);
+            if (!one.empty()) {
+                text += (text.empty() ? "" : ", ") + one;
             }
-            if (!text.empty()) {
-                text += ", ";
-            }
-            text += escape_html(
-                fmt::format("{} = {}", s_.attr(a).name, x_.value_label(s_.attr(a).codom, v)));
         }
         return text;
     }
@@ -392,9 +400,17 @@ private:
     std::vector<std::vector<std::vector<Row>>> rows_; // by object, by part
 };
 
-std::string endpoint(const std::pair<std::string, std::string>& place) {
-    return place.second.empty() ? dot_id(place.first)
-                                : dot_id(place.first) + ":" + dot_id(place.second);
+/// An edge end: a node, or a row of a node with an optional compass point ("e", "w") so that an
+/// edge between side-by-side panels leaves and enters the row from the side facing the other.
+std::string endpoint(const std::pair<std::string, std::string>& place, std::string_view compass) {
+    if (place.second.empty()) {
+        return dot_id(place.first);
+    }
+    std::string out = dot_id(place.first) + ":" + dot_id(place.second);
+    if (!compass.empty()) {
+        out += ":" + std::string(compass);
+    }
+    return out;
 }
 
 /// Writes a panel as a cluster titled `title` (a placeholder node keeps an empty one visible).
@@ -419,12 +435,22 @@ std::string anchor(const Panel& panel, std::string_view id) {
     return first ? *first : std::string(id) + "__empty";
 }
 
+/// Puts the panel of anchor `a` left of the panel of anchor `b` when no map edge does: an
+/// invisible edge within one rank (an edge across ranks would fight the maps' rank constraints).
+void order_panels(Writer& w, const std::string& a, const std::string& b) {
+    w.line(fmt::format("{} -> {} [style=invis];", dot_id(a), dot_id(b)));
+    w.line(fmt::format("{{rank=same; {}; {};}}", dot_id(a), dot_id(b)));
+}
+
 /// Writes the dashed edges of a map between two panels. With `reversed`, the edge is written
 /// from the codomain to the domain with dir=back (the arrow still points at the image) so that
-/// the codomain is laid out to the left: Pre ← Keep.
-void write_map(Writer& w, const hom::ACSetMorphism& f, const ACSet& dom, const Panel& from,
-               const Panel& to, std::string_view style, bool reversed, bool same_rank) {
+/// the codomain is laid out to the left: Pre ← Keep. With `same_rank`, each part is put in the
+/// rank of its image, which lays the two panels out side by side. Returns the number of edges.
+std::size_t write_map(Writer& w, const hom::ACSetMorphism& f, const ACSet& dom, const Panel& from,
+                      const Panel& to, std::string_view style, bool reversed, bool same_rank) {
     const Schema& s = dom.schema();
+    std::size_t count = 0;
+    std::string_view east = same_rank ? "e" : "", west = same_rank ? "w" : "";
     for (std::uint32_t i = 0; i < s.num_obs(); ++i) {
         ObId ob(i);
         CATPLAN_ASSERT(f.components.size() == s.num_obs() &&
@@ -437,15 +463,19 @@ void write_map(Writer& w, const hom::ACSetMorphism& f, const ACSet& dom, const P
                 continue;
             }
             if (reversed) {
-                w.line(fmt::format("{} -> {} [{}, dir=back];", endpoint(*b), endpoint(*a), style));
+                w.line(fmt::format("{} -> {} [{}, dir=back];", endpoint(*b, east),
+                                   endpoint(*a, west), style));
             } else {
-                w.line(fmt::format("{} -> {} [{}];", endpoint(*a), endpoint(*b), style));
+                w.line(
+                    fmt::format("{} -> {} [{}];", endpoint(*a, east), endpoint(*b, west), style));
             }
             if (same_rank) {
                 w.line(fmt::format("{{rank=same; {}; {};}}", dot_id(a->first), dot_id(b->first)));
             }
+            ++count;
         }
     }
+    return count;
 }
 
 void check_images(const hom::ACSetMorphism& f, const ACSet& dom, const ACSet& codom) {
@@ -558,12 +588,17 @@ std::string rule_to_dot(const rewrite::Rule& r, const DotOptions& o) {
                             c.negative ? "#b03030" : "#307030");
     }
     // l : Keep -> Pre is written Pre -> Keep with dir=back so that Pre is drawn on the left.
-    write_map(w, r.l, r.K, keep, pre, kMapStyle, /*reversed=*/true, /*same_rank=*/true);
-    write_map(w, r.r, r.K, keep, eff, kMapStyle, /*reversed=*/false, /*same_rank=*/true);
-    // Invisible edges keep the panels in order even when Keep is empty.
-    w.line(fmt::format("{} -> {} -> {} [style=invis];", dot_id(anchor(pre, "Pre")),
-                       dot_id(anchor(keep, "Keep")), dot_id(anchor(eff, "Eff"))));
+    if (write_map(w, r.l, r.K, keep, pre, kMapStyle, /*reversed=*/true, /*same_rank=*/true) == 0) {
+        order_panels(w, anchor(pre, "Pre"), anchor(keep, "Keep"));
+    }
+    if (write_map(w, r.r, r.K, keep, eff, kMapStyle, /*reversed=*/false, /*same_rank=*/true) == 0) {
+        order_panels(w, anchor(keep, "Keep"), anchor(eff, "Eff"));
+    }
     for (std::size_t i = 0; i < r.conditions.size(); ++i) {
+        // Conditions go right of Eff; their maps from Pre do not constrain the layout.
+        order_panels(w,
+                     i == 0 ? anchor(eff, "Eff") : anchor(conditions[i - 1], fmt::format("N{}", i)),
+                     anchor(conditions[i], fmt::format("N{}", i + 1)));
         std::string style = fmt::format("style=dashed, color=\"{}\", arrowhead=vee, "
                                         "constraint=false",
                                         r.conditions[i].negative ? "#c07070" : "#70a070");
@@ -582,9 +617,9 @@ std::string morphism_to_dot(const hom::ACSetMorphism& f, const ACSet& dom, const
     header(w, name, name, o, false, true);
     write_panel_cluster(w, from, "dom", "domain", "#555555");
     write_panel_cluster(w, to, "codom", "codomain", "#555555");
-    write_map(w, f, dom, from, to, kMapStyle, false, true);
-    w.line(fmt::format("{} -> {} [style=invis];", dot_id(anchor(from, "dom")),
-                       dot_id(anchor(to, "codom"))));
+    if (write_map(w, f, dom, from, to, kMapStyle, false, true) == 0) {
+        order_panels(w, anchor(from, "dom"), anchor(to, "codom"));
+    }
     // Where the domain's attribute variables go: a note under the picture.
     std::string vars;
     const Schema& s = dom.schema();
