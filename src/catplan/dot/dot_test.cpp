@@ -306,6 +306,22 @@ TEST(DotGolden, RuleWithNegativeCondition) {
     expect_golden("putdown_rule_nac", rule_to_dot(r));
 }
 
+TEST(DotGolden, RuleWithEmptyPreAndKeep) {
+    // A rule that creates a block from nothing: empty panels keep their place and order.
+    Blocks b;
+    rewrite::Rule r(b.s);
+    r.name = "create";
+    b.add_block(r.R, "new", "white", true, true);
+    r.l.components = {{}, {}, {}, {}};
+    r.l.var_components = {{}, {}, {}};
+    r.r = r.l;
+    ASSERT_TRUE(rewrite::check_rule(r).empty());
+    std::string dot = rule_to_dot(r);
+    EXPECT_TRUE(contains(dot, "Pre__empty -> Keep__empty [style=invis];"));
+    EXPECT_TRUE(contains(dot, "Keep__empty -> Eff_Block_1 [style=invis];"));
+    expect_golden("create_rule", dot);
+}
+
 TEST(DotGolden, MorphismWithPredicateRowsAndVariables) {
     // The pattern "a clear block of unknown colour, on another block" into the slides' state.
     Slides sl;
