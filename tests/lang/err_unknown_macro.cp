@@ -5,6 +5,6 @@
   weight::Attr(E, Weight)
 end
 
-@rule swap(Graph) begin
+@action swap(Graph) begin
   e::E
 end

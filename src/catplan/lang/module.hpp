@@ -5,7 +5,13 @@
 //
 //   syntax.hpp   tokens and a generic AST of macro calls (no meaning attached)
 //   module.hpp   elaboration per macro: @present -> Schema, @acset_colim / @acset -> ACSet,
-//                @import -> more declarations; printing back to loadable text
+//                @rule / @migration -> rewrite::Rule, @domain -> plan::Domain,
+//                @problem -> plan::Problem, @import -> more declarations; printing back to
+//                loadable text
+//
+// Rule blocks (Pre/Keep/Eff, or L/K/R) are *partial* presentations, unlike instances: a hom or
+// attribute a block never mentions stays unset, meaning "no constraint" in Pre, "rewritten by
+// Eff" in Keep and "unchanged" for a kept part in Eff (docs/language.md, "Rules").
 //
 //   SourceManager sources;
 //   DiagnosticSink sink(sources);
@@ -16,6 +22,8 @@
 #include "catplan/acset/acset.hpp"
 #include "catplan/base/diagnostic.hpp"
 #include "catplan/base/source.hpp"
+#include "catplan/plan/domain.hpp"
+#include "catplan/rewrite/rule.hpp"
 #include "catplan/schema/schema.hpp"
 
 #include <memory>
@@ -25,7 +33,7 @@
 
 namespace catplan::lang {
 
-enum class DeclKind { Schema, Instance };
+enum class DeclKind { Schema, Instance, Rule, Domain, Problem };
 
 struct Declaration {
     DeclKind kind = DeclKind::Schema;
@@ -33,10 +41,17 @@ struct Declaration {
     SourceRange range;
     /// True when the declaration comes from an @import-ed file rather than the loaded one.
     bool imported = false;
-    /// The schema (for an instance: its schema).
+    /// The schema (for an instance, rule, domain or problem: the schema it is on).
     schema::SchemaPtr schema;
     /// Instances only.
     std::shared_ptr<const acset::ACSet> instance;
+    /// Rules only (top-level rules; rules written inside a domain live in the domain).
+    rewrite::RulePtr rule;
+    /// Domains only.
+    plan::DomainPtr domain;
+    /// Problems only; also the names of its initial and goal instances.
+    plan::ProblemPtr problem;
+    std::string initial_name, goal_name;
 };
 
 class Module {
@@ -69,8 +84,13 @@ Module load_source(std::string name, std::string text, SourceManager& sources, D
 
 /// One line: "schema Kitchenworld: 10 objects, 13 homs, 3 attribute types, 15 attributes" /
 /// "instance Initial (ColorBlocksworld): 11 parts (Block 7, Empty 1, Gripper 1, On 2), 3
-/// variables".
+/// variables" / "rule unstack(block, underblock) on ColorBlocksworld: L 9 parts, K 3, R 5,
+/// deletes 4, creates 1, 1 NAC" / "domain Blocksworld (ColorBlocksworld): 4 rules: unstack,
+/// stack, pickup, putdown" / "problem CaseStudy (Blocksworld): initial Initial, goal Goal".
 std::string summarize(const Declaration& d);
+
+/// The one-line summary of a rule (as for a rule declaration), e.g. for the rules of a domain.
+std::string summarize_rule(const rewrite::Rule& rule);
 
 /// The schema in @present form, loadable again to an equal schema.
 std::string print_schema(const schema::Schema& s);

@@ -38,7 +38,78 @@ std::string path_term(const Schema& s, const Path& p) {
 
 } // namespace
 
+namespace {
+
+// Parts of `to` outside the image of f (the parts a rule deletes from L or creates in R).
+std::size_t outside_image(const hom::ACSetMorphism& f, const ACSet& to) {
+    std::size_t n = 0;
+    const Schema& s = to.schema();
+    for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
+        std::vector<bool> hit(to.num_parts(ObId(o)), false);
+        if (o < f.components.size()) {
+            for (Part p : f.components[o]) {
+                if (p < hit.size()) {
+                    hit[p] = true;
+                }
+            }
+        }
+        for (bool h : hit) {
+            n += h ? 0 : 1;
+        }
+    }
+    return n;
+}
+
+} // namespace
+
+std::string summarize_rule(const rewrite::Rule& rule) {
+    std::vector<std::string> params;
+    for (const auto& p : rule.parameters) {
+        params.push_back(p.name);
+    }
+    std::string out = fmt::format("rule {}({}) on {}: L {}, K {}, R {}, deletes {}, creates {}",
+                                  rule.name, fmt::join(params, ", "), rule.L.schema().name(),
+                                  plural(rule.L.total_parts(), "part"), rule.K.total_parts(),
+                                  rule.R.total_parts(), outside_image(rule.l, rule.L),
+                                  outside_image(rule.r, rule.R));
+    std::size_t nacs = 0, pacs = 0, exprs = 0;
+    for (const auto& c : rule.conditions) {
+        ++(c.negative ? nacs : pacs);
+    }
+    for (const auto& per_type : rule.exprs) {
+        for (const auto& e : per_type) {
+            exprs += e ? 1 : 0;
+        }
+    }
+    if (nacs > 0) {
+        out += fmt::format(", {} NAC{}", nacs, nacs == 1 ? "" : "s");
+    }
+    if (pacs > 0) {
+        out += fmt::format(", {} PAC{}", pacs, pacs == 1 ? "" : "s");
+    }
+    if (exprs > 0) {
+        out += ", " + plural(exprs, "expression");
+    }
+    return out;
+}
+
 std::string summarize(const Declaration& d) {
+    if (d.kind == DeclKind::Rule) {
+        return summarize_rule(*d.rule);
+    }
+    if (d.kind == DeclKind::Domain) {
+        std::vector<std::string> names;
+        for (const auto& r : d.domain->rules) {
+            names.push_back(r->name);
+        }
+        return fmt::format("domain {} ({}): {}{}{}", d.name, d.schema->name(),
+                           plural(names.size(), "rule"), names.empty() ? "" : ": ",
+                           fmt::join(names, ", "));
+    }
+    if (d.kind == DeclKind::Problem) {
+        return fmt::format("problem {} ({}): initial {}, goal {}", d.name, d.problem->domain->name,
+                           d.initial_name, d.goal_name);
+    }
     if (d.kind == DeclKind::Schema) {
         const Schema& s = *d.schema;
         std::string out =

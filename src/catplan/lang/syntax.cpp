@@ -100,7 +100,8 @@ private:
             push(TokenKind::At, b, i_, "@");
             return;
         }
-        static constexpr std::string_view kTwo[] = {"::", "==", "<:", "=>", "->"};
+        static constexpr std::string_view kTwo[] = {"::", "==", "<:", "=>", "->",
+                                                    "!=", "<=", ">=", "&&", "||"};
         for (auto op : kTwo) {
             if (text_.substr(i_, 2) == op) {
                 i_ += 2;
@@ -108,7 +109,8 @@ private:
                 return;
             }
         }
-        if (std::string_view("()[],;=.-").find(static_cast<char>(c)) != std::string_view::npos) {
+        if (std::string_view("()[],;=.-+*/!<>:").find(static_cast<char>(c)) !=
+            std::string_view::npos) {
             ++i_;
             push(TokenKind::Punct, b, i_, std::string(1, static_cast<char>(c)));
             return;
@@ -400,6 +402,17 @@ private:
         m.name_range = at.range.merge(name.range);
         next();
         m.range = m.name_range;
+        if (at_punct("(") && peek().range.begin == name.range.end) {
+            // Call form `@migration(Schema, begin ... end)`: a trailing block is the body.
+            next();
+            m.header = list(")", m.range);
+            if (!m.header.empty() && m.header.back().kind == Expr::Kind::Block) {
+                m.has_body = true;
+                m.body = std::move(m.header.back().args);
+                m.header.pop_back();
+            }
+            return m;
+        }
         // Header: expressions up to `begin` or the end of the statement.
         while (!at_separator() && !at_ident("begin") && !at_punct(")") && !at_punct(",")) {
             Expr e = expr();
@@ -408,35 +421,44 @@ private:
         }
         if (at_ident("begin")) {
             m.has_body = true;
-            int saved = nest_;
-            nest_ = 0;
-            next();
-            while (true) {
-                skip_separators();
-                const Token& t = peek();
-                if (t.kind == TokenKind::Eof) {
-                    sink_.error(m.name_range,
-                                fmt::format("missing 'end' for '@{}' begun here", m.name));
-                    nest_ = saved;
-                    throw SyntaxError{};
-                }
-                if (at_ident("end")) {
-                    m.range = m.range.merge(next().range);
-                    break;
-                }
-                try {
-                    m.body.push_back(expr());
-                    end_of_statement();
-                } catch (const SyntaxError&) {
-                    recover();
-                }
-            }
-            nest_ = saved;
+            m.body = block(m.range, m.name_range, fmt::format("'@{}'", m.name));
         }
         return m;
     }
 
-    // Precedence, lowest first: = ; => -> ; == ; <: ; :: ; . (composition) ; calls and atoms.
+    // `begin statements... end`, at the `begin`; `what` names the opener for a missing `end`.
+    std::vector<Expr> block(SourceRange& range, SourceRange opener, const std::string& what) {
+        std::vector<Expr> body;
+        int saved = nest_;
+        nest_ = 0;
+        next();
+        while (true) {
+            skip_separators();
+            const Token& t = peek();
+            if (t.kind == TokenKind::Eof) {
+                sink_.error(opener, fmt::format("missing 'end' for {} begun here", what));
+                nest_ = saved;
+                throw SyntaxError{};
+            }
+            if (at_ident("end")) {
+                range = range.merge(next().range);
+                break;
+            }
+            try {
+                body.push_back(expr());
+                if (!at_ident("end")) { // `begin x::B end` on one line, as Julia allows
+                    end_of_statement();
+                }
+            } catch (const SyntaxError&) {
+                recover();
+            }
+        }
+        nest_ = saved;
+        return body;
+    }
+
+    // Precedence, lowest first: = ; => -> ; || ; && ; == != < <= > >= ; <: ; + - ; * / ;
+    // unary - ! ; :: ; . (composition) ; calls and atoms.
     Expr expr() { return assignment(); }
 
     Expr binary(std::string op, Expr lhs, Expr rhs) {
@@ -460,7 +482,7 @@ private:
     }
 
     Expr arrow() {
-        Expr lhs = equality();
+        Expr lhs = logical_or();
         if (at_punct("=>") || at_punct("->")) {
             std::string op = next().text;
             Expr rhs = arrow();
@@ -469,22 +491,82 @@ private:
         return lhs;
     }
 
+    Expr logical_or() {
+        Expr lhs = logical_and();
+        while (at_punct("||")) {
+            next();
+            lhs = binary("||", std::move(lhs), logical_and());
+        }
+        return lhs;
+    }
+
+    Expr logical_and() {
+        Expr lhs = equality();
+        while (at_punct("&&")) {
+            next();
+            lhs = binary("&&", std::move(lhs), equality());
+        }
+        return lhs;
+    }
+
     Expr equality() {
         Expr lhs = subtype();
-        while (at_punct("==")) {
-            next();
-            lhs = binary("==", std::move(lhs), subtype());
+        while (at_punct("==") || at_punct("!=") || at_punct("<") || at_punct("<=") ||
+               at_punct(">") || at_punct(">=")) {
+            std::string op = next().text;
+            lhs = binary(op, std::move(lhs), subtype());
         }
         return lhs;
     }
 
     Expr subtype() {
-        Expr lhs = typed();
+        Expr lhs = additive();
         while (at_punct("<:")) {
             next();
-            lhs = binary("<:", std::move(lhs), typed());
+            lhs = binary("<:", std::move(lhs), additive());
         }
         return lhs;
+    }
+
+    Expr additive() {
+        Expr lhs = multiplicative();
+        while (at_punct("+") || at_punct("-")) {
+            std::string op = next().text;
+            lhs = binary(op, std::move(lhs), multiplicative());
+        }
+        return lhs;
+    }
+
+    Expr multiplicative() {
+        Expr lhs = unary();
+        while (at_punct("*") || at_punct("/")) {
+            std::string op = next().text;
+            lhs = binary(op, std::move(lhs), unary());
+        }
+        return lhs;
+    }
+
+    Expr unary() {
+        if (at_punct("-") || at_punct("!")) {
+            Token op = next();
+            Expr arg = unary();
+            if (op.text == "-" && (arg.kind == Expr::Kind::Int || arg.kind == Expr::Kind::Float) &&
+                arg.text.rfind('-', 0) != 0) {
+                // A negative literal: -1 is the number, not an operation.
+                arg.int_value = -arg.int_value;
+                arg.float_value = -arg.float_value;
+                arg.text = "-" + arg.text;
+                arg.range = op.range.merge(arg.range);
+                return arg;
+            }
+            Expr e;
+            e.kind = Expr::Kind::Unary;
+            e.text = op.text;
+            e.range = op.range.merge(arg.range);
+            e.args.push_back(std::move(arg));
+            return e;
+        }
+        return typed();
     }
 
     Expr typed() {
@@ -552,7 +634,12 @@ private:
             return e;
         }
         case TokenKind::Ident: {
-            if (t.text == "begin" || t.text == "end") {
+            if (t.text == "begin") {
+                e.kind = Expr::Kind::Block;
+                e.args = block(e.range, t.range, "'begin'");
+                return e;
+            }
+            if (t.text == "end") {
                 fail_at(t, fmt::format("unexpected '{}'", t.text));
             }
             Token name = next();
@@ -584,6 +671,17 @@ private:
                     return inner;
                 }
                 e.kind = Expr::Kind::Tuple;
+                return e;
+            }
+            if (t.text == ":") {
+                Token colon = next();
+                const Token& n = peek();
+                if (n.kind != TokenKind::Ident || n.range.begin != colon.range.end) {
+                    fail_at(colon, "expected a name right after ':' (a symbol such as :unstack)");
+                }
+                e.kind = Expr::Kind::Symbol;
+                e.text = n.text;
+                e.range = colon.range.merge(next().range);
                 return e;
             }
             if (t.text == "[") {
@@ -673,6 +771,12 @@ std::string to_string(const Expr& e) {
                                e.text == "." ? "⋅" : "::", to_string(e.args[1]));
         }
         return fmt::format("{} {} {}", to_string(e.args[0]), e.text, to_string(e.args[1]));
+    case Expr::Kind::Unary:
+        return e.text + to_string(e.args[0]);
+    case Expr::Kind::Symbol:
+        return ":" + e.text;
+    case Expr::Kind::Block:
+        return "begin ... end";
     case Expr::Kind::Macro:
         return fmt::format("@{} ...", e.macro->name);
     }

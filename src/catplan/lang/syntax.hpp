@@ -47,7 +47,11 @@ struct Expr {
         Call,   // text(args...)
         Tuple,  // (args...)
         Vector, // [args...]
-        Binary, // args[0] text args[1], text one of = => -> == <: :: .
+        Binary, // args[0] text args[1], text one of = => -> == <: :: . and the expression
+                // operators || && != < <= > >= + - * /
+        Unary,  // text args[0], text one of - !
+        Symbol, // :text (a Julia symbol such as :unstack)
+        Block,  // begin args... end (statements)
         Macro,  // macro
     };
     Kind kind = Kind::Name;
@@ -65,6 +69,7 @@ struct Expr {
 };
 
 /// `@name header... [begin body... end]`, possibly the right side of `assigned = @name ...`.
+/// The call form `@name(a, b, begin ... end)` has header [a, b] and the block as its body.
 struct MacroCall {
     std::string name; // without '@'
     SourceRange name_range;

@@ -131,6 +131,47 @@ TEST(Parser, NestsMacrosForLaterDeclarationKinds) {
     EXPECT_EQ(body[0].args[1].macro->body.size(), 1u);
 }
 
+TEST(Parser, ReadsTheCallFormOfAMacroWithABlockArgument) {
+    Parsed p("@domain D(S) begin\n  :unstack => @migration(Ont, begin\n    Pre => begin x::B; "
+             "y::B end; Keep => @join begin x::B end\n  end)\nend\n");
+    ASSERT_FALSE(p.sink.has_errors()) << p.sink.render();
+    const auto& st = p.file.forms[0].body[0];
+    ASSERT_TRUE(st.is_binary("=>"));
+    EXPECT_EQ(st.args[0].kind, Expr::Kind::Symbol);
+    EXPECT_EQ(to_string(st.args[0]), ":unstack");
+    const auto& m = *st.args[1].macro;
+    EXPECT_EQ(m.name, "migration");
+    ASSERT_EQ(m.header.size(), 1u);
+    EXPECT_EQ(m.header[0].text, "Ont");
+    ASSERT_TRUE(m.has_body);
+    ASSERT_EQ(m.body.size(), 2u);
+    EXPECT_EQ(m.body[0].args[1].kind, Expr::Kind::Block);
+    EXPECT_EQ(m.body[0].args[1].args.size(), 2u);
+}
+
+TEST(Parser, ExpressionOperatorsFollowJuliaPrecedence) {
+    Parsed p("@rule r begin\n  w(e) == w(a) + w(b) * 2 - -1\n  f(x) == (!g(x) && h(x) < 3 || "
+             "k(x) != 1)\n  n(x) == -m(x)\nend\n");
+    ASSERT_FALSE(p.sink.has_errors()) << p.sink.render();
+    const auto& body = p.file.forms[0].body;
+    ASSERT_EQ(body.size(), 3u);
+    const Expr& sum = body[0].args[1];
+    ASSERT_TRUE(sum.is_binary("-"));
+    ASSERT_TRUE(sum.args[0].is_binary("+"));
+    EXPECT_TRUE(sum.args[0].args[1].is_binary("*"));
+    EXPECT_EQ(sum.args[1].kind, Expr::Kind::Int);
+    EXPECT_EQ(sum.args[1].int_value, -1);
+    const Expr& logic = body[1].args[1];
+    ASSERT_TRUE(body[1].is_binary("=="));
+    ASSERT_TRUE(logic.is_binary("||"));
+    ASSERT_TRUE(logic.args[0].is_binary("&&"));
+    EXPECT_EQ(logic.args[0].args[0].kind, Expr::Kind::Unary);
+    EXPECT_TRUE(logic.args[0].args[1].is_binary("<"));
+    EXPECT_TRUE(logic.args[1].is_binary("!="));
+    EXPECT_EQ(body[2].args[1].kind, Expr::Kind::Unary);
+    EXPECT_EQ(to_string(body[2].args[1]), "-m(x)");
+}
+
 TEST(Parser, RangesCoverTheirText) {
     Parsed p("@present S(FreeSchema) begin\n  f::Hom(A, B)\nend\n");
     const auto& st = p.file.forms[0].body[0];

@@ -1,0 +1,335 @@
+// Rules, domains and problems in the language, and the case study end to end: the paper's plan
+// replays step by step on both forms of the ColorBlocksworld example (the appendix form with
+// attributes on Block, and the authors' slide form with predicate objects).
+
+#include "catplan/acset/acset.hpp"
+#include "catplan/hom/hom_search.hpp"
+#include "catplan/lang/module.hpp"
+#include "catplan/plan/domain.hpp"
+#include "catplan/rewrite/dpo.hpp"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+namespace catplan::lang {
+namespace {
+
+using acset::ACSet;
+using acset::Value;
+
+struct Loaded {
+    SourceManager sources;
+    DiagnosticSink sink{sources};
+    Module module;
+};
+
+std::unique_ptr<Loaded> load(const std::string& relative) {
+    auto out = std::make_unique<Loaded>();
+    out->module =
+        load_file(std::string(CATPLAN_SOURCE_DIR) + "/" + relative, out->sources, out->sink);
+    return out;
+}
+
+std::unique_ptr<Loaded> load_text(const std::string& text) {
+    auto out = std::make_unique<Loaded>();
+    out->module = load_source("test.cp", text, out->sources, out->sink);
+    return out;
+}
+
+plan::Plan paper_plan(SourceManager& sources, DiagnosticSink& sink) {
+    auto file =
+        sources.add_file(std::string(CATPLAN_SOURCE_DIR) + "/examples/colorblocksworld/paper.plan");
+    EXPECT_TRUE(file.has_value());
+    auto p = plan::parse_plan(*file, sources, sink);
+    EXPECT_TRUE(p.has_value()) << sink.render();
+    return p ? *p : plan::Plan{};
+}
+
+// The match of a step: its arguments bind the rule's parameters by name; the rest is found by
+// search and must be unique.
+hom::ACSetMorphism step_match(const rewrite::Rule& rule, const ACSet& x, const plan::Step& step) {
+    rewrite::MatchOptions opt;
+    EXPECT_EQ(rule.parameters.size(), step.args.size()) << step.to_string();
+    for (std::size_t i = 0; i < rule.parameters.size() && i < step.args.size(); ++i) {
+        const auto& p = rule.parameters[i];
+        auto part = x.find_part(p.ob, step.args[i]);
+        EXPECT_TRUE(part.has_value()) << step.args[i];
+        if (part) {
+            opt.initial.push_back({p.ob, p.part, *part});
+        }
+    }
+    auto matches = rewrite::find_matches(rule, x, opt);
+    EXPECT_EQ(matches.size(), 1u) << step.to_string();
+    return matches.empty() ? hom::ACSetMorphism{} : matches[0];
+}
+
+// Replays the paper's plan on the problem's initial state and returns the states after each step.
+std::vector<ACSet> replay(const plan::Problem& problem, const plan::Plan& plan) {
+    std::vector<ACSet> states;
+    ACSet x = *problem.initial;
+    for (const auto& step : plan.steps) {
+        const rewrite::Rule* rule = problem.domain->find_rule(step.action);
+        EXPECT_NE(rule, nullptr) << step.action;
+        if (rule == nullptr) {
+            break;
+        }
+        auto m = step_match(*rule, x, step);
+        if (m.components.empty()) {
+            break;
+        }
+        auto applied = rewrite::rewrite_in_place(*rule, x, m);
+        EXPECT_TRUE(applied.has_value()) << step.to_string();
+        if (!applied.has_value()) {
+            break;
+        }
+        states.push_back(x);
+    }
+    return states;
+}
+
+bool goal_embeds(const plan::Problem& problem, const ACSet& x) {
+    hom::HomSearchOptions opt;
+    opt.monic_all = true;
+    return hom::is_homomorphic(*problem.goal, x, opt);
+}
+
+ObId ob(const ACSet& x, const char* name) {
+    return *x.schema().find_ob(name);
+}
+
+TEST(CaseStudy, AppendixFormLoadsWithItsDomainAndProblem) {
+    auto l = load("examples/colorblocksworld/colorblocksworld.cp");
+    ASSERT_FALSE(l->sink.has_errors()) << l->sink.render();
+    const Declaration* d = l->module.find("Blocksworld");
+    ASSERT_NE(d, nullptr);
+    ASSERT_EQ(d->kind, DeclKind::Domain);
+    EXPECT_EQ(summarize(*d), "domain Blocksworld (ColorBlocksworld): 4 rules: unstack, stack, "
+                             "pickup, putdown");
+    const rewrite::Rule* unstack = d->domain->find_rule("unstack");
+    ASSERT_NE(unstack, nullptr);
+    // The paper's unstack: L holds gripper, empty, block, underblock, the held marker block
+    // and o; K the gripper and the two blocks; R the same three with new values.
+    EXPECT_EQ(summarize_rule(*unstack), "rule unstack(block, underblock) on ColorBlocksworld: L "
+                                        "6 parts, K 3, R 3, deletes 3, creates 0");
+    ASSERT_EQ(unstack->parameters.size(), 2u);
+    EXPECT_EQ(unstack->parameters[0].name, "block");
+    EXPECT_EQ(unstack->parameters[1].name, "underblock");
+    const Declaration* p = l->module.find("CaseStudy");
+    ASSERT_NE(p, nullptr);
+    EXPECT_EQ(summarize(*p), "problem CaseStudy (Blocksworld): initial Initial, goal Goal");
+}
+
+TEST(CaseStudy, PaperPlanReplaysOnTheAppendixForm) {
+    auto l = load("examples/colorblocksworld/colorblocksworld.cp");
+    ASSERT_FALSE(l->sink.has_errors()) << l->sink.render();
+    const auto& problem = *l->module.find("CaseStudy")->problem;
+    auto plan = paper_plan(l->sources, l->sink);
+    ASSERT_EQ(plan.steps.size(), 8u);
+    EXPECT_FALSE(goal_embeds(problem, *problem.initial));
+    auto states = replay(problem, plan);
+    ASSERT_EQ(states.size(), 8u);
+
+    // After unstack(E, D): the gripper holds E, the Empty part and its marker block are gone,
+    // On(E, D) is gone and D is clear (reference §1.11, in the appendix form).
+    const ACSet& x1 = states[0];
+    const auto& s = x1.schema();
+    Part e = *x1.find_part(ob(x1, "Block"), "E");
+    Part dd = *x1.find_part(ob(x1, "Block"), "D");
+    Part c = *x1.find_part(ob(x1, "Block"), "C");
+    EXPECT_EQ(x1.num_parts(ob(x1, "Gripper")), 1u);
+    EXPECT_EQ(x1.subpart(*s.find_hom("isHolding"), 0), e);
+    EXPECT_EQ(x1.num_parts(ob(x1, "Empty")), 0u);
+    EXPECT_EQ(x1.num_parts(ob(x1, "Block")), 6u);
+    ASSERT_EQ(x1.num_parts(ob(x1, "On")), 1u);
+    EXPECT_EQ(x1.subpart(*s.find_hom("on_l"), 0), dd);
+    EXPECT_EQ(x1.subpart(*s.find_hom("on_r"), 0), c);
+    EXPECT_EQ(x1.subpart(*s.find_attr("isClear"), dd), Value::boolean(true));
+    EXPECT_EQ(x1.subpart(*s.find_attr("isClear"), e), Value::boolean(true));
+    EXPECT_EQ(x1.subpart(*s.find_attr("isOnTable"), e), Value::boolean(false));
+    EXPECT_EQ(x1.subpart(*s.find_attr("hasColor"), e), Value::string("purple"));
+
+    // After putdown(E) the hand is empty again, with a new Empty part and marker block.
+    EXPECT_EQ(states[1].num_parts(ob(x1, "Empty")), 1u);
+    EXPECT_EQ(states[1].num_parts(ob(x1, "Block")), 7u);
+
+    const ACSet& last = states.back();
+    EXPECT_EQ(last.num_parts(ob(last, "On")), 4u);
+    EXPECT_TRUE(goal_embeds(problem, last));
+    for (std::size_t i = 0; i + 1 < states.size(); ++i) {
+        EXPECT_FALSE(goal_embeds(problem, states[i])) << "after step " << i + 1;
+    }
+}
+
+TEST(CaseStudy, PaperPlanReplaysOnTheSlideForm) {
+    auto l = load("examples/colorblocksworld/slides.cp");
+    ASSERT_FALSE(l->sink.has_errors()) << l->sink.render();
+    const Declaration* pd = l->module.find("SlidesCaseStudy");
+    ASSERT_NE(pd, nullptr);
+    const auto& problem = *pd->problem;
+    const rewrite::Rule* unstack = problem.domain->find_rule("unstack");
+    ASSERT_NE(unstack, nullptr);
+    ASSERT_EQ(unstack->parameters.size(), 2u);
+    EXPECT_EQ(unstack->parameters[0].name, "block");
+    EXPECT_EQ(unstack->parameters[1].name, "underblock");
+    auto plan = paper_plan(l->sources, l->sink);
+    auto states = replay(problem, plan);
+    ASSERT_EQ(states.size(), 8u);
+
+    // After unstack(E, D): reference §1.11 without the stale fact: D has one IsClear part, true.
+    const ACSet& x1 = states[0];
+    const auto& s = x1.schema();
+    ObId block = ob(x1, "Block"), is_clear = ob(x1, "IsClear");
+    Part e = *x1.find_part(block, "E");
+    Part dd = *x1.find_part(block, "D");
+    EXPECT_EQ(x1.num_parts(block), 7u);
+    EXPECT_EQ(x1.subpart(*s.find_hom("isHolding"), 0), e);
+    EXPECT_EQ(x1.num_parts(ob(x1, "On")), 1u);
+    EXPECT_EQ(x1.num_parts(is_clear), 5u);
+    int d_clear = 0, e_clear = 0;
+    for (Part p = 0; p < x1.num_parts(is_clear); ++p) {
+        Part dom = x1.subpart(*s.find_hom("isClearDom"), p);
+        if (dom == dd) {
+            ++d_clear;
+            EXPECT_EQ(x1.subpart(*s.find_attr("isClear"), p), Value::boolean(true));
+        }
+        e_clear += dom == e ? 1 : 0;
+    }
+    EXPECT_EQ(d_clear, 1);
+    EXPECT_EQ(e_clear, 0);
+    EXPECT_TRUE(goal_embeds(problem, states.back()));
+    EXPECT_FALSE(goal_embeds(problem, *problem.initial));
+}
+
+TEST(Rules, NamedVariablesFlowFromPreToEffAndExpressionsAreTyped) {
+    auto l = load_text(R"(
+@present W(FreeSchema) begin
+  Thing::Ob
+  Weight::AttrType(Float)
+  Name::AttrType(String)
+  weight::Attr(Thing, Weight)
+  name::Attr(Thing, Name)
+end
+@rule merge(a, b) on W begin
+  Pre => begin
+    (a, b)::Thing
+    n::Name
+    name(a) == n
+  end
+  Keep => begin
+    a::Thing
+  end
+  Eff => begin
+    a::Thing
+    n::Name
+    c::Thing
+    name(c) == n
+    weight(c) == weight(a) + weight(b) * 2.0
+    name(a) == name(a) * "!"
+  end
+  NAC => begin
+    weight(b) == 0.0
+  end
+end
+)");
+    ASSERT_FALSE(l->sink.has_errors()) << l->sink.render();
+    const auto& rule = *l->module.find("merge")->rule;
+    EXPECT_EQ(summarize_rule(rule), "rule merge(a, b) on W: L 2 parts, K 1, R 2, deletes 1, "
+                                    "creates 1, 1 NAC, 2 expressions");
+    // K has the named variable n, so r sends it to R's n and c's name takes a's name.
+    EXPECT_EQ(rule.K.num_vars(*rule.K.schema().find_attr_type("Name")), 1u);
+    std::size_t exprs = 0;
+    for (const auto& per_type : rule.exprs) {
+        for (const auto& e : per_type) {
+            exprs += e ? 1 : 0;
+        }
+    }
+    EXPECT_EQ(exprs, 2u);
+    EXPECT_TRUE(rewrite::check_rule(rule).empty());
+}
+
+TEST(Rules, NacRejectsAMatchAndAnExpressionUpdatesAKeptPart) {
+    auto l = load_text(R"(
+@present S(FreeSchema) begin
+  (Thing, Holder)::Ob
+  holds::Hom(Holder, Thing)
+  Flag::AttrType(Bool)
+  Size::AttrType(Int)
+  flag::Attr(Thing, Flag)
+  size::Attr(Thing, Size)
+end
+@acset_colim Start(S) begin
+  (t, u)::Thing
+  h::Holder
+  holds(h) == u
+  flag(t) == false; size(t) == 2
+  flag(u) == false; size(u) == 5
+end
+@rule mark(a) on S begin
+  Pre => begin
+    a::Thing
+    flag(a) == false
+  end
+  Keep => begin
+    a::Thing
+  end
+  Eff => begin
+    a::Thing
+    flag(a) == true
+    size(a) == size(a) + 1
+  end
+  NAC => begin
+    h::Holder
+    holds(h) == a
+  end
+end
+)");
+    ASSERT_FALSE(l->sink.has_errors()) << l->sink.render();
+    const auto& rule = *l->module.find("mark")->rule;
+    ACSet x = *l->module.find("Start")->instance;
+    auto matches = rewrite::find_matches(rule, x);
+    ASSERT_EQ(matches.size(), 1u); // u is held, so only t matches
+    ObId thing = ob(x, "Thing");
+    Part t = *x.find_part(thing, "t");
+    EXPECT_EQ(matches[0](thing, 0), t);
+    auto applied = rewrite::rewrite_in_place(rule, x, matches[0]);
+    ASSERT_TRUE(applied.has_value());
+    const auto& s = x.schema();
+    EXPECT_EQ(x.subpart(*s.find_attr("flag"), t), Value::boolean(true));
+    EXPECT_EQ(x.subpart(*s.find_attr("size"), t), Value::integer(3));
+    EXPECT_TRUE(rewrite::find_matches(rule, x).empty());
+}
+
+TEST(Rules, ErrorsAreLocated) {
+    auto l = load_text(R"(
+@present S(FreeSchema) begin
+  Thing::Ob
+  Flag::AttrType(Bool)
+  flag::Attr(Thing, Flag)
+end
+@rule r1 on S begin
+  Pre => begin
+    a::Thing
+  end
+  Keep => begin
+    b::Thing
+  end
+end
+@rule r2 on S begin
+  Pre => begin
+    a::Thing
+  end
+  Eff => begin
+    a::Thing
+    flag(a) == flag(a) + 1
+  end
+end
+)");
+    ASSERT_TRUE(l->sink.has_errors());
+    std::string out = l->sink.render();
+    EXPECT_NE(out.find("Keep part 'b' is not in Pre"), std::string::npos) << out;
+    EXPECT_NE(out.find("type error"), std::string::npos) << out;
+}
+
+} // namespace
+} // namespace catplan::lang
