@@ -300,6 +300,31 @@ end
     EXPECT_TRUE(rewrite::find_matches(rule, x).empty());
 }
 
+TEST(Rules, LiteralsInRulesGiveKindsAndConditionsMayBePositive) {
+    auto l = load_text(R"(
+@present S(FreeSchema) begin
+  Thing::Ob
+  Flag::AttrType
+  flag::Attr(Thing, Flag)
+end
+@rule raise(a) on S begin
+  Pre => begin a::Thing; flag(a) == false end
+  Keep => begin a::Thing end
+  Eff => begin a::Thing; flag(a) == true end
+  PAC => begin b::Thing; flag(b) == true end
+end
+)");
+    ASSERT_FALSE(l->sink.has_errors()) << l->sink.render();
+    const auto& rule = *l->module.find("raise")->rule;
+    const auto& s = rule.L.schema();
+    EXPECT_EQ(s.attr_type(*s.find_attr_type("Flag")).kind, schema::ValueKind::Bool);
+    EXPECT_EQ(summarize_rule(rule), "rule raise(a) on S: L 1 part, K 1, R 1, deletes 0, creates "
+                                    "0, 1 PAC");
+    ASSERT_EQ(rule.conditions.size(), 1u);
+    EXPECT_FALSE(rule.conditions[0].negative);
+    EXPECT_EQ(rule.conditions[0].n_state.total_parts(), 2u);
+}
+
 TEST(Rules, ErrorsAreLocated) {
     auto l = load_text(R"(
 @present S(FreeSchema) begin
