@@ -463,7 +463,7 @@ std::size_t write_map(Writer& w, const hom::ACSetMorphism& f, const ACSet& dom, 
                 continue;
             }
             if (reversed) {
-                w.line(fmt::format("{} -> {} [{}, dir=back];", endpoint(*b, east),
+                w.line(fmt::format("{} -> {} [{}, dir=back, arrowtail=vee];", endpoint(*b, east),
                                    endpoint(*a, west), style));
             } else {
                 w.line(
