@@ -1,1 +1,1 @@
-show examples/colorblocksworld/colorblocksworld.cp Goal
+show examples/colorblocksworld/colorblocksworld.cp Nowhere

@@ -7,9 +7,12 @@
 #include "catplan/hom/morphism.hpp"
 #include "catplan/json/json.hpp"
 #include "catplan/lang/module.hpp"
+#include "catplan/plan/search.hpp"
+#include "catplan/plan/validate.hpp"
 #include "catplan/schema/printer.hpp"
 
 #include <CLI/CLI.hpp>
+#include <cstdio>
 #include <filesystem>
 #include <fmt/format.h>
 #include <memory>
@@ -56,6 +59,22 @@ std::string declared_names(const lang::Module& m) {
     return names.empty() ? "none" : names;
 }
 
+std::string_view kind_name(lang::DeclKind kind) {
+    switch (kind) {
+    case lang::DeclKind::Schema:
+        return "a schema";
+    case lang::DeclKind::Instance:
+        return "an instance";
+    case lang::DeclKind::Rule:
+        return "a rule";
+    case lang::DeclKind::Domain:
+        return "a domain";
+    case lang::DeclKind::Problem:
+        return "a problem";
+    }
+    return "a declaration";
+}
+
 // The declaration `name` of the wanted kind, or an error message on err.
 const lang::Declaration* find_declaration(const lang::Module& m, const std::string& file,
                                           const std::string& name,
@@ -67,9 +86,7 @@ const lang::Declaration* find_declaration(const lang::Module& m, const std::stri
         return nullptr;
     }
     if (kind && d->kind != *kind) {
-        error(err, fmt::format("'{}' is {}, not {}", name,
-                               d->kind == lang::DeclKind::Schema ? "a schema" : "an instance",
-                               *kind == lang::DeclKind::Schema ? "a schema" : "an instance"));
+        error(err, fmt::format("'{}' is {}, not {}", name, kind_name(d->kind), kind_name(*kind)));
         return nullptr;
     }
     return d;
@@ -111,6 +128,8 @@ int cmd_show(const std::string& file, const std::string& name, std::ostream& out
     }
     if (d->kind == lang::DeclKind::Schema) {
         out << schema::describe(*d->schema);
+    } else if (d->kind != lang::DeclKind::Instance) {
+        out << lang::summarize(*d) << "\n";
     } else {
         out << fmt::format("instance {} of {}\n", d->name, d->schema->name());
         out << acset::to_tables(*d->instance);
@@ -270,6 +289,153 @@ int cmd_json_import(const std::vector<std::string>& args, std::string name,
     return emit(lang::print_instance(*x, name), output, out, err);
 }
 
+// ---- validate and plan ----------------------------------------------------------------------
+
+// The problem `problem_name` of FILE, checked against `--domain` when one is given.
+plan::ProblemPtr load_problem(Session& s, const std::string& file, const std::string& domain_name,
+                              const std::string& problem_name, std::ostream& err) {
+    auto m = lang::load_file(file, s.sources, s.sink);
+    if (report(s, err)) {
+        return nullptr;
+    }
+    const auto* p = find_declaration(m, file, problem_name, lang::DeclKind::Problem, err);
+    if (p == nullptr) {
+        return nullptr;
+    }
+    if (!domain_name.empty()) {
+        const auto* d = find_declaration(m, file, domain_name, lang::DeclKind::Domain, err);
+        if (d == nullptr) {
+            return nullptr;
+        }
+        if (d->domain != p->problem->domain) {
+            error(err, fmt::format("problem '{}' is on domain '{}', not '{}'", problem_name,
+                                   p->problem->domain->name, domain_name));
+            return nullptr;
+        }
+    }
+    return p->problem;
+}
+
+struct ValidateArgs {
+    std::string file, domain, problem, plan_file;
+    bool trace = false;
+};
+
+int cmd_validate(const ValidateArgs& a, std::ostream& out, std::ostream& err) {
+    Session s;
+    auto problem = load_problem(s, a.file, a.domain, a.problem, err);
+    if (problem == nullptr) {
+        return kBadInput;
+    }
+    auto f = s.sources.add_file(a.plan_file);
+    if (!f) {
+        error(err, fmt::format("cannot read '{}'", a.plan_file));
+        return kBadInput;
+    }
+    auto plan = plan::parse_plan(*f, s.sources, s.sink);
+    if (report(s, err) || !plan) {
+        return kBadInput;
+    }
+    plan::ValidateOptions options;
+    options.keep_states = true; // the matches are printed against the state they apply to
+    auto v = plan::validate_plan(*problem, *plan, options);
+    if (a.trace) {
+        out << "initial state:\n" << acset::to_tables(v.states[0]);
+    }
+    for (std::size_t i = 0; i < v.matches.size(); ++i) {
+        const auto& step = plan->steps[i];
+        const auto* rule = problem->domain->find_rule(step.action);
+        out << fmt::format("{}. {}\n", i + 1, step.to_string());
+        out << fmt::format("   match: {}\n",
+                           plan::describe_match(v.matches[i], rule->L, v.states[i]));
+        if (a.trace) {
+            out << fmt::format("state after step {}:\n", i + 1)
+                << acset::to_tables(v.states[i + 1]);
+        }
+    }
+    if (v.valid) {
+        out << "valid: goal reached\n";
+        return kOk;
+    }
+    std::string where;
+    if (v.failed_step && plan->steps[*v.failed_step].range.valid()) {
+        auto r = plan->steps[*v.failed_step].range;
+        auto lc = s.sources.line_col(r.file, r.begin);
+        where = fmt::format(" ({}:{}:{})", s.sources.name(r.file), lc.line, lc.col);
+    }
+    out << fmt::format("invalid: {}{}\n", v.reason, where);
+    return kNo;
+}
+
+struct PlanArgs {
+    std::string file, domain, problem, output;
+    std::string search = "bfs", heuristic = "hff";
+    std::uint64_t max_nodes = 0;
+    double max_time = 0, max_memory_mb = 0;
+    bool no_timing = false;
+};
+
+std::string format_stats(const plan::SearchStats& st, bool timing) {
+    std::string text = fmt::format("expanded {}, generated {}, duplicates {}, states {}",
+                                   st.expanded, st.generated, st.duplicates, st.states);
+    if (timing) {
+        text +=
+            fmt::format(", {:.1f} MB, {:.3f} s", static_cast<double>(st.bytes) / 1e6, st.seconds);
+    }
+    return text;
+}
+
+int cmd_plan(const PlanArgs& a, std::ostream& out, std::ostream& err) {
+    Session s;
+    auto problem = load_problem(s, a.file, a.domain, a.problem, err);
+    if (problem == nullptr) {
+        return kBadInput;
+    }
+    plan::SearchOptions options;
+    options.search = *plan::parse_search(a.search);
+    options.heuristic = *plan::parse_heuristic(a.heuristic);
+    options.max_nodes = a.max_nodes;
+    options.max_seconds = a.max_time;
+    options.max_bytes = static_cast<std::size_t>(a.max_memory_mb * 1e6);
+    if (!a.no_timing) {
+        options.progress = [&err](const plan::SearchStats& st) {
+            err << fmt::format("catplan: searching: expanded {}, generated {}, frontier {}, f {}, "
+                               "{:.1f} MB, {:.1f} s\n",
+                               st.expanded, st.generated, st.frontier, st.f,
+                               static_cast<double>(st.bytes) / 1e6, st.seconds);
+        };
+    }
+    auto r = plan::find_plan(*problem, options);
+    std::string config = options.search == plan::SearchKind::BreadthFirst
+                             ? a.search
+                             : fmt::format("{}, {}", a.search, a.heuristic);
+    std::string stats = fmt::format("# {}\n", format_stats(r.stats, !a.no_timing));
+    if (r.status == plan::SearchStatus::Solved) {
+        std::string text = r.plan->to_string();
+        std::string summary = fmt::format("# plan of {} step{} ({})\n", r.plan->steps.size(),
+                                          r.plan->steps.size() == 1 ? "" : "s", config) +
+                              stats;
+        if (a.output.empty() || a.output == "-") {
+            out << text << summary;
+            return kOk;
+        }
+        int rc = emit(text, a.output, out, err);
+        out << summary;
+        return rc;
+    }
+    if (r.status == plan::SearchStatus::Unsolvable) {
+        out << fmt::format(
+                   "# no plan: the goal is unreachable (every reachable state was expanded; "
+                   "{})\n",
+                   config)
+            << stats;
+        return kNo;
+    }
+    out << fmt::format("# no plan found: {} reached ({})\n", plan::to_string(r.status), config)
+        << stats;
+    return kLimit;
+}
+
 } // namespace
 
 int run(int argc, char** argv, std::ostream& out, std::ostream& err) {
@@ -323,6 +489,47 @@ int run(int argc, char** argv, std::ostream& out, std::ostream& err) {
     json_import->add_option("--name", import_name, "name of the declaration printed");
     json_import->add_option("-o,--output", import_output, "write to this file instead of stdout");
 
+    ValidateArgs validate_args;
+    auto* validate = app.add_subcommand(
+        "validate", "Replay a plan on a problem and check its goal (exit 1 when invalid)");
+    validate->add_option("FILE", validate_args.file, "language file (.cp)")->required();
+    validate->add_option("--domain", validate_args.domain,
+                         "the domain (default: the problem's domain)");
+    validate->add_option("--problem", validate_args.problem, "the problem declared in FILE")
+        ->required();
+    validate->add_option("--plan", validate_args.plan_file, "plan file: one step per line")
+        ->required();
+    validate->add_flag("--trace", validate_args.trace, "print every state as tables");
+
+    PlanArgs plan_args;
+    auto* plan_cmd = app.add_subcommand(
+        "plan", "Search for a plan (exit 1 when provably none, 4 when a limit stops the search)");
+    plan_cmd->add_option("FILE", plan_args.file, "language file (.cp)")->required();
+    plan_cmd->add_option("--domain", plan_args.domain,
+                         "the domain (default: the problem's domain)");
+    plan_cmd->add_option("--problem", plan_args.problem, "the problem declared in FILE")
+        ->required();
+    plan_cmd->add_option("--search", plan_args.search, "bfs (shortest plans), astar or gbfs")
+        ->check(CLI::IsMember({"bfs", "astar", "gbfs"}))
+        ->capture_default_str();
+    plan_cmd
+        ->add_option("--heuristic", plan_args.heuristic,
+                     "for astar and gbfs: blind, goalcount, hadd or hff")
+        ->check(CLI::IsMember({"blind", "goalcount", "hadd", "hff"}))
+        ->capture_default_str();
+    plan_cmd->add_option("--max-nodes", plan_args.max_nodes, "stop after expanding N states")
+        ->check(CLI::NonNegativeNumber);
+    plan_cmd->add_option("--max-time", plan_args.max_time, "stop after S seconds")
+        ->check(CLI::NonNegativeNumber);
+    plan_cmd
+        ->add_option("--max-memory", plan_args.max_memory_mb,
+                     "stop when the stored states take about MB megabytes")
+        ->check(CLI::NonNegativeNumber);
+    plan_cmd->add_option("-o,--output", plan_args.output, "write the plan to this file");
+    plan_cmd->add_flag(
+        "--no-timing", plan_args.no_timing,
+        "no progress reports, no time or memory in the statistics (reproducible output)");
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
@@ -347,6 +554,12 @@ int run(int argc, char** argv, std::ostream& out, std::ostream& err) {
     }
     if (json_export->parsed()) {
         return cmd_json_export(export_file, export_name, export_pretty, export_output, out, err);
+    }
+    if (validate->parsed()) {
+        return cmd_validate(validate_args, out, err);
+    }
+    if (plan_cmd->parsed()) {
+        return cmd_plan(plan_args, out, err);
     }
     if (json_import->parsed()) {
         return cmd_json_import(import_args, import_name, import_output, out, err);

@@ -1,6 +1,7 @@
 #include "catplan/plan/heuristic.hpp"
 
 #include "catplan/base/hash.hpp"
+#include "catplan/hom/hom_search.hpp"
 
 #include <algorithm>
 #include <functional>
@@ -96,13 +97,10 @@ public:
         if (problem.goal) {
             const ACSet& g = *problem.goal;
             const ACSet& init = *problem.initial;
+            auto image = goal_entities(g, init);
             goal_facts = facts_of(g, [&](ObId ob, Part p) {
-                auto name = g.part_name(ob, p);
-                std::optional<Part> q;
-                if (!name.empty()) {
-                    q = init.find_part(ob, name);
-                }
-                return q ? Pos{Pos::Kind::Const, *q} : Pos{};
+                Part q = image[ob.index()][p];
+                return q != kNoPart ? Pos{Pos::Kind::Const, q} : Pos{};
             });
         }
         masks_.assign(num_types(), {});
@@ -196,6 +194,43 @@ private:
                 }
             }
         }
+    }
+
+    // The initial entity standing for each goal entity: one monic morphism from the goal's
+    // entities (with their attributes and the homs between them) into the initial state, the
+    // goal's names bound to the initial state's; failing that, by name alone (kNoPart: unknown).
+    std::vector<std::vector<Part>> goal_entities(const ACSet& g, const ACSet& init) const {
+        const auto& s = *schema_;
+        std::vector<std::vector<Part>> image(s.num_obs());
+        ACSet only(g);
+        hom::HomSearchOptions opt;
+        opt.monic_all = true;
+        for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
+            ObId ob(o);
+            image[o].assign(g.num_parts(ob), kNoPart);
+            if (!entity_[o]) {
+                for (Part p = static_cast<Part>(g.num_parts(ob)); p-- > 0;) {
+                    only.remove_part(ob, p);
+                }
+                continue;
+            }
+            for (Part p = 0; p < g.num_parts(ob); ++p) {
+                auto name = g.part_name(ob, p);
+                if (auto q = name.empty() ? std::nullopt : init.find_part(ob, name)) {
+                    image[o][p] = *q;
+                    opt.bind(ob, p, *q);
+                }
+            }
+        }
+        auto m = hom::find_homomorphism(only, init, opt);
+        if (m) {
+            for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
+                if (entity_[o]) {
+                    image[o] = m->components[o];
+                }
+            }
+        }
+        return image;
     }
 
     // The facts of a state or pattern; `entity` says what an entity part becomes.

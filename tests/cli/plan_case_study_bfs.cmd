@@ -1,0 +1,1 @@
+plan examples/colorblocksworld/colorblocksworld.cp --domain Blocksworld --problem CaseStudy --no-timing

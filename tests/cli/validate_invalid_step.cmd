@@ -1,0 +1,1 @@
+validate examples/colorblocksworld/colorblocksworld.cp --problem CaseStudy --plan tests/cli/data/bad_step.plan
