@@ -1,14 +1,19 @@
 #!/bin/sh
-# The demo: the paper's case study. For now: the ColorBlocksworld schema and the initial state of
-# the paper's Table 1, loaded from examples/ and printed as tables.
+# The demo: the paper's case study in ColorBlocksworld (the appendix form). It loads the schema,
+# the initial state of the paper's Table 1 and the goal tower, then replays and validates the
+# paper's plan with DPO rewriting. (Plan transfer into Kitchenworld comes with the transfer work.)
 set -eu
 CATPLAN=${1:-build/release/src/catplan/cli/catplan}
 EX=examples/colorblocksworld/colorblocksworld.cp
+PLAN=examples/colorblocksworld/paper.plan
 echo "== catplan check $EX"
 "$CATPLAN" check "$EX"
 echo
-echo "== catplan show $EX ColorBlocksworld"
-"$CATPLAN" show "$EX" ColorBlocksworld
-echo
 echo "== catplan show $EX Initial   (the paper's Table 1, left column)"
 "$CATPLAN" show "$EX" Initial
+echo
+echo "== the paper's plan ($PLAN)"
+cat "$PLAN"
+echo
+echo "== catplan validate $EX --domain Blocksworld --problem CaseStudy --plan $PLAN"
+"$CATPLAN" validate "$EX" --domain Blocksworld --problem CaseStudy --plan "$PLAN"
