@@ -3,6 +3,7 @@
 #include "catplan/acset/printer.hpp"
 #include "catplan/base/diagnostic.hpp"
 #include "catplan/base/output_file.hpp"
+#include "catplan/dot/dot.hpp"
 #include "catplan/hom/hom_search.hpp"
 #include "catplan/hom/morphism.hpp"
 #include "catplan/json/json.hpp"
@@ -237,9 +238,58 @@ int cmd_json_export(const std::string& file, const std::string& name, bool prett
     if (d == nullptr) {
         return kBadInput;
     }
+    if (d->kind != lang::DeclKind::Schema && d->kind != lang::DeclKind::Instance) {
+        error(err, fmt::format("'{}' is not a schema or an instance: Catlab's JSON has no format "
+                               "for it",
+                               name));
+        return kBadInput;
+    }
     std::string text = d->kind == lang::DeclKind::Schema ? json::write_schema(*d->schema, pretty)
                                                          : json::write_acset(*d->instance, pretty);
     return emit(text + "\n", output, out, err);
+}
+
+// ---- dot ------------------------------------------------------------------------------------
+
+// A rule declared at top level or inside a domain of the module.
+const rewrite::Rule* find_rule(const lang::Module& m, const std::string& name) {
+    for (const auto& d : m.declarations()) {
+        if (d.kind == lang::DeclKind::Rule && d.name == name) {
+            return d.rule.get();
+        }
+        if (d.kind == lang::DeclKind::Domain) {
+            if (const auto* r = d.domain->find_rule(name)) {
+                return r;
+            }
+        }
+    }
+    return nullptr;
+}
+
+int cmd_dot(const std::string& file, const std::string& name, bool left_to_right,
+            const std::string& output, std::ostream& out, std::ostream& err) {
+    Session s;
+    auto m = lang::load_file(file, s.sources, s.sink);
+    if (report(s, err)) {
+        return kBadInput;
+    }
+    dot::DotOptions options;
+    options.left_to_right = left_to_right;
+    if (const auto* rule = find_rule(m, name)) {
+        return emit(dot::rule_to_dot(*rule, options), output, out, err);
+    }
+    const auto* d = find_declaration(m, file, name, std::nullopt, err);
+    if (d == nullptr) {
+        return kBadInput;
+    }
+    if (d->kind == lang::DeclKind::Schema) {
+        return emit(dot::schema_to_dot(*d->schema, options), output, out, err);
+    }
+    if (d->kind == lang::DeclKind::Instance) {
+        return emit(dot::state_to_dot(*d->instance, d->name, options), output, out, err);
+    }
+    error(err, fmt::format("'{}' has no picture: name a schema, an instance or a rule", name));
+    return kBadInput;
 }
 
 std::string file_stem(const std::string& path) {
@@ -490,6 +540,16 @@ int run(int argc, char** argv, std::ostream& out, std::ostream& err) {
     json_import->add_option("-o,--output", import_output, "write to this file instead of stdout");
 
     ValidateArgs validate_args;
+    std::string dot_file, dot_name, dot_output;
+    bool dot_lr = false;
+    auto* dot_cmd = app.add_subcommand(
+        "dot", "Write Graphviz DOT for a schema, an instance or a rule (render with `dot -Tsvg`)");
+    dot_cmd->add_option("FILE", dot_file)->required();
+    dot_cmd->add_option("NAME", dot_name, "a schema, an instance, or a rule (also one of a domain)")
+        ->required();
+    dot_cmd->add_flag("--lr", dot_lr, "lay schemas and states out left to right");
+    dot_cmd->add_option("-o,--output", dot_output, "write to this file instead of stdout");
+
     auto* validate = app.add_subcommand(
         "validate", "Replay a plan on a problem and check its goal (exit 1 when invalid)");
     validate->add_option("FILE", validate_args.file, "language file (.cp)")->required();
@@ -554,6 +614,9 @@ int run(int argc, char** argv, std::ostream& out, std::ostream& err) {
     }
     if (json_export->parsed()) {
         return cmd_json_export(export_file, export_name, export_pretty, export_output, out, err);
+    }
+    if (dot_cmd->parsed()) {
+        return cmd_dot(dot_file, dot_name, dot_lr, dot_output, out, err);
     }
     if (validate->parsed()) {
         return cmd_validate(validate_args, out, err);

@@ -1,0 +1,1 @@
+dot examples/colorblocksworld/colorblocksworld.cp CaseStudy

@@ -1,0 +1,1 @@
+dot tests/cli/data/graphs.cp Cycle3 --lr
