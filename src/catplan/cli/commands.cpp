@@ -34,6 +34,15 @@ bool report(const Session& s, std::ostream& err) {
     return s.sink.has_errors();
 }
 
+// Loads a file and its imports; nullopt (with every diagnostic printed) when it has errors.
+std::optional<lang::Module> load(Session& s, const std::string& file, std::ostream& err) {
+    auto m = lang::load_file(file, s.sources, s.sink);
+    if (report(s, err)) {
+        return std::nullopt;
+    }
+    return m;
+}
+
 void error(std::ostream& err, const std::string& message) {
     err << "catplan: error: " << message << "\n";
 }
@@ -119,11 +128,11 @@ int cmd_check(const std::vector<std::string>& files, std::ostream& out, std::ost
 int cmd_show(const std::string& file, const std::string& name, std::ostream& out,
              std::ostream& err) {
     Session s;
-    auto m = lang::load_file(file, s.sources, s.sink);
-    if (report(s, err)) {
+    auto m = load(s, file, err);
+    if (!m) {
         return kBadInput;
     }
-    const auto* d = find_declaration(m, file, name, std::nullopt, err);
+    const auto* d = find_declaration(*m, file, name, std::nullopt, err);
     if (d == nullptr) {
         return kBadInput;
     }
@@ -179,12 +188,12 @@ struct HomsArgs {
 
 int cmd_homs(const HomsArgs& a, std::ostream& out, std::ostream& err) {
     Session s;
-    auto m = lang::load_file(a.file, s.sources, s.sink);
-    if (report(s, err)) {
+    auto m = load(s, a.file, err);
+    if (!m) {
         return kBadInput;
     }
-    const auto* dx = find_declaration(m, a.file, a.from, lang::DeclKind::Instance, err);
-    const auto* dy = find_declaration(m, a.file, a.to, lang::DeclKind::Instance, err);
+    const auto* dx = find_declaration(*m, a.file, a.from, lang::DeclKind::Instance, err);
+    const auto* dy = find_declaration(*m, a.file, a.to, lang::DeclKind::Instance, err);
     if (dx == nullptr || dy == nullptr) {
         return kBadInput;
     }
@@ -230,11 +239,11 @@ int cmd_homs(const HomsArgs& a, std::ostream& out, std::ostream& err) {
 int cmd_json_export(const std::string& file, const std::string& name, bool pretty,
                     const std::string& output, std::ostream& out, std::ostream& err) {
     Session s;
-    auto m = lang::load_file(file, s.sources, s.sink);
-    if (report(s, err)) {
+    auto m = load(s, file, err);
+    if (!m) {
         return kBadInput;
     }
-    const auto* d = find_declaration(m, file, name, std::nullopt, err);
+    const auto* d = find_declaration(*m, file, name, std::nullopt, err);
     if (d == nullptr) {
         return kBadInput;
     }
@@ -269,16 +278,16 @@ const rewrite::Rule* find_rule(const lang::Module& m, const std::string& name) {
 int cmd_dot(const std::string& file, const std::string& name, bool left_to_right,
             const std::string& output, std::ostream& out, std::ostream& err) {
     Session s;
-    auto m = lang::load_file(file, s.sources, s.sink);
-    if (report(s, err)) {
+    auto m = load(s, file, err);
+    if (!m) {
         return kBadInput;
     }
     dot::DotOptions options;
     options.left_to_right = left_to_right;
-    if (const auto* rule = find_rule(m, name)) {
+    if (const auto* rule = find_rule(*m, name)) {
         return emit(dot::rule_to_dot(*rule, options), output, out, err);
     }
-    const auto* d = find_declaration(m, file, name, std::nullopt, err);
+    const auto* d = find_declaration(*m, file, name, std::nullopt, err);
     if (d == nullptr) {
         return kBadInput;
     }
@@ -319,11 +328,11 @@ int cmd_json_import(const std::vector<std::string>& args, std::string name,
         error(err, "json import takes SCHEMA_FILE SCHEMA JSON_FILE, or JSON_FILE for a schema");
         return kBadInput;
     }
-    auto m = lang::load_file(args[0], s.sources, s.sink);
-    if (report(s, err)) {
+    auto m = load(s, args[0], err);
+    if (!m) {
         return kBadInput;
     }
-    const auto* d = find_declaration(m, args[0], args[1], lang::DeclKind::Schema, err);
+    const auto* d = find_declaration(*m, args[0], args[1], lang::DeclKind::Schema, err);
     if (d == nullptr) {
         return kBadInput;
     }
@@ -344,16 +353,16 @@ int cmd_json_import(const std::vector<std::string>& args, std::string name,
 // The problem `problem_name` of FILE, checked against `--domain` when one is given.
 plan::ProblemPtr load_problem(Session& s, const std::string& file, const std::string& domain_name,
                               const std::string& problem_name, std::ostream& err) {
-    auto m = lang::load_file(file, s.sources, s.sink);
-    if (report(s, err)) {
+    auto m = load(s, file, err);
+    if (!m) {
         return nullptr;
     }
-    const auto* p = find_declaration(m, file, problem_name, lang::DeclKind::Problem, err);
+    const auto* p = find_declaration(*m, file, problem_name, lang::DeclKind::Problem, err);
     if (p == nullptr) {
         return nullptr;
     }
     if (!domain_name.empty()) {
-        const auto* d = find_declaration(m, file, domain_name, lang::DeclKind::Domain, err);
+        const auto* d = find_declaration(*m, file, domain_name, lang::DeclKind::Domain, err);
         if (d == nullptr) {
             return nullptr;
         }

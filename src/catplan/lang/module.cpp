@@ -1219,38 +1219,9 @@ private:
             return x;
         }
 
-        ACSet build(std::shared_ptr<Schema> schema) {
-            ACSet x(schema);
-            std::vector<Part> part_of(parts_.size(), kNoPart);
-            for (std::uint32_t p = 0; p < parts_.size(); ++p) {
-                if (parts_uf_.find(p) == p) {
-                    part_of[p] = x.add_part(parts_[p].ob, part_names_[p]);
-                }
-            }
-            std::vector<Value> value_of(values_.size());
-            for (std::uint32_t v = 0; v < values_.size(); ++v) {
-                if (values_uf_.find(v) == v) {
-                    value_of[v] = values_[v].literal ? *values_[v].literal
-                                                     : x.add_var(values_[v].type, value_names_[v]);
-                }
-            }
-            for (std::uint32_t p = 0; p < parts_.size(); ++p) {
-                if (parts_uf_.find(p) != p) {
-                    continue;
-                }
-                ObId ob = parts_[p].ob;
-                auto homs = s_.homs_from(ob);
-                for (std::size_t i = 0; i < homs.size(); ++i) {
-                    x.set_subpart(homs[i], part_of[p], part_of[parts_uf_.find(parts_[p].homs[i])]);
-                }
-                auto attrs = s_.attrs_from(ob);
-                for (std::size_t i = 0; i < attrs.size(); ++i) {
-                    x.set_subpart(attrs[i], part_of[p],
-                                  value_of[values_uf_.find(parts_[p].attrs[i])]);
-                }
-            }
-            return x;
-        }
+        // A free presentation (instances): after completion every hom and attribute is defined,
+        // so building it partially gives the whole state.
+        ACSet build(std::shared_ptr<Schema> schema) { return build_partial(std::move(schema)); }
 
     private:
         struct Gen {
