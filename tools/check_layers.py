@@ -7,7 +7,8 @@ import pathlib
 import re
 import sys
 
-LAYERS = ["base", "schema", "acset", "hom", "colimit", "rewrite", "migrate", "plan", "json", "dot", "lang", "cli"]
+LAYERS = ["base", "schema", "acset", "hom", "colimit", "rewrite", "migrate", "plan", "transfer", "json", "dot", "lang", "pddl",
+          "report", "cli"]
 INCLUDE = re.compile(r'^\s*#\s*include\s+"catplan/([a-z_]+)/([^"]+)"')
 
 

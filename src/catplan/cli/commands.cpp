@@ -3,6 +3,7 @@
 #include "catplan/acset/printer.hpp"
 #include "catplan/base/diagnostic.hpp"
 #include "catplan/base/output_file.hpp"
+#include "catplan/cli/common.hpp"
 #include "catplan/dot/dot.hpp"
 #include "catplan/hom/hom_search.hpp"
 #include "catplan/hom/morphism.hpp"
@@ -21,86 +22,6 @@
 
 namespace catplan::cli {
 namespace {
-
-// Everything one command loaded: the sources outlive the diagnostics that point into them.
-struct Session {
-    SourceManager sources;
-    DiagnosticSink sink{sources};
-};
-
-// Prints the diagnostics collected so far; returns true when there were errors.
-bool report(const Session& s, std::ostream& err) {
-    err << s.sink.render();
-    return s.sink.has_errors();
-}
-
-// Loads a file and its imports; nullopt (with every diagnostic printed) when it has errors.
-std::optional<lang::Module> load(Session& s, const std::string& file, std::ostream& err) {
-    auto m = lang::load_file(file, s.sources, s.sink);
-    if (report(s, err)) {
-        return std::nullopt;
-    }
-    return m;
-}
-
-void error(std::ostream& err, const std::string& message) {
-    err << "catplan: error: " << message << "\n";
-}
-
-// Prints to stdout, or writes the whole text to a file (through a temporary file and a rename).
-int emit(const std::string& text, const std::string& output, std::ostream& out, std::ostream& err) {
-    if (output.empty() || output == "-") {
-        out << text;
-        return kOk;
-    }
-    std::string why;
-    if (!write_file_atomically(output, text, why)) {
-        error(err, why);
-        return kBadInput;
-    }
-    return kOk;
-}
-
-std::string declared_names(const lang::Module& m) {
-    std::string names;
-    for (const auto& d : m.declarations()) {
-        names += (names.empty() ? "" : ", ") + d.name;
-    }
-    return names.empty() ? "none" : names;
-}
-
-std::string_view kind_name(lang::DeclKind kind) {
-    switch (kind) {
-    case lang::DeclKind::Schema:
-        return "a schema";
-    case lang::DeclKind::Instance:
-        return "an instance";
-    case lang::DeclKind::Rule:
-        return "a rule";
-    case lang::DeclKind::Domain:
-        return "a domain";
-    case lang::DeclKind::Problem:
-        return "a problem";
-    }
-    return "a declaration";
-}
-
-// The declaration `name` of the wanted kind, or an error message on err.
-const lang::Declaration* find_declaration(const lang::Module& m, const std::string& file,
-                                          const std::string& name,
-                                          std::optional<lang::DeclKind> kind, std::ostream& err) {
-    const auto* d = m.find(name);
-    if (d == nullptr) {
-        error(err, fmt::format("'{}' declares nothing named '{}' (declared: {})", file, name,
-                               declared_names(m)));
-        return nullptr;
-    }
-    if (kind && d->kind != *kind) {
-        error(err, fmt::format("'{}' is {}, not {}", name, kind_name(d->kind), kind_name(*kind)));
-        return nullptr;
-    }
-    return d;
-}
 
 // ---- check ----------------------------------------------------------------------------------
 
@@ -260,21 +181,6 @@ int cmd_json_export(const std::string& file, const std::string& name, bool prett
 
 // ---- dot ------------------------------------------------------------------------------------
 
-// A rule declared at top level or inside a domain of the module.
-const rewrite::Rule* find_rule(const lang::Module& m, const std::string& name) {
-    for (const auto& d : m.declarations()) {
-        if (d.kind == lang::DeclKind::Rule && d.name == name) {
-            return d.rule.get();
-        }
-        if (d.kind == lang::DeclKind::Domain) {
-            if (const auto* r = d.domain->find_rule(name)) {
-                return r;
-            }
-        }
-    }
-    return nullptr;
-}
-
 int cmd_dot(const std::string& file, const std::string& name, bool left_to_right,
             const std::string& output, std::ostream& out, std::ostream& err) {
     Session s;
@@ -349,31 +255,6 @@ int cmd_json_import(const std::vector<std::string>& args, std::string name,
 }
 
 // ---- validate and plan ----------------------------------------------------------------------
-
-// The problem `problem_name` of FILE, checked against `--domain` when one is given.
-plan::ProblemPtr load_problem(Session& s, const std::string& file, const std::string& domain_name,
-                              const std::string& problem_name, std::ostream& err) {
-    auto m = load(s, file, err);
-    if (!m) {
-        return nullptr;
-    }
-    const auto* p = find_declaration(*m, file, problem_name, lang::DeclKind::Problem, err);
-    if (p == nullptr) {
-        return nullptr;
-    }
-    if (!domain_name.empty()) {
-        const auto* d = find_declaration(*m, file, domain_name, lang::DeclKind::Domain, err);
-        if (d == nullptr) {
-            return nullptr;
-        }
-        if (d->domain != p->problem->domain) {
-            error(err, fmt::format("problem '{}' is on domain '{}', not '{}'", problem_name,
-                                   p->problem->domain->name, domain_name));
-            return nullptr;
-        }
-    }
-    return p->problem;
-}
 
 struct ValidateArgs {
     std::string file, domain, problem, plan_file;
@@ -599,6 +480,26 @@ int run(int argc, char** argv, std::ostream& out, std::ostream& err) {
         "--no-timing", plan_args.no_timing,
         "no progress reports, no time or memory in the statistics (reproducible output)");
 
+    CommandTable table;
+    using O = std::ostream;
+    table.add(check, [&](O& o, O& e) { return cmd_check(check_files, o, e); });
+    table.add(show, [&](O& o, O& e) { return cmd_show(show_file, show_name, o, e); });
+    table.add(homs, [&](O& o, O& e) { return cmd_homs(homs_args, o, e); });
+    table.add(json_export, [&](O& o, O& e) {
+        return cmd_json_export(export_file, export_name, export_pretty, export_output, o, e);
+    });
+    table.add(json_import, [&](O& o, O& e) {
+        return cmd_json_import(import_args, import_name, import_output, o, e);
+    });
+    table.add(dot_cmd,
+              [&](O& o, O& e) { return cmd_dot(dot_file, dot_name, dot_lr, dot_output, o, e); });
+    table.add(validate, [&](O& o, O& e) { return cmd_validate(validate_args, o, e); });
+    table.add(plan_cmd, [&](O& o, O& e) { return cmd_plan(plan_args, o, e); });
+
+    add_migrate_commands(app, table);
+    add_transfer_commands(app, table);
+    add_pddl_commands(app, table);
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
@@ -612,29 +513,8 @@ int run(int argc, char** argv, std::ostream& out, std::ostream& err) {
         return kBadInput;
     }
 
-    if (check->parsed()) {
-        return cmd_check(check_files, out, err);
-    }
-    if (show->parsed()) {
-        return cmd_show(show_file, show_name, out, err);
-    }
-    if (homs->parsed()) {
-        return cmd_homs(homs_args, out, err);
-    }
-    if (json_export->parsed()) {
-        return cmd_json_export(export_file, export_name, export_pretty, export_output, out, err);
-    }
-    if (dot_cmd->parsed()) {
-        return cmd_dot(dot_file, dot_name, dot_lr, dot_output, out, err);
-    }
-    if (validate->parsed()) {
-        return cmd_validate(validate_args, out, err);
-    }
-    if (plan_cmd->parsed()) {
-        return cmd_plan(plan_args, out, err);
-    }
-    if (json_import->parsed()) {
-        return cmd_json_import(import_args, import_name, import_output, out, err);
+    if (auto rc = table.run_parsed(out, err)) {
+        return *rc;
     }
     return kBadInput;
 }

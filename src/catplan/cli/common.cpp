@@ -1,0 +1,136 @@
+#include "catplan/cli/common.hpp"
+
+#include "catplan/cli/commands.hpp"
+
+#include "catplan/base/output_file.hpp"
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+#include <ostream>
+
+namespace catplan::cli {
+
+// Prints the diagnostics collected so far; returns true when there were errors.
+bool report(const Session& s, std::ostream& err) {
+    err << s.sink.render();
+    return s.sink.has_errors();
+}
+
+// Loads a file and its imports; nullopt (with every diagnostic printed) when it has errors.
+std::optional<lang::Module> load(Session& s, const std::string& file, std::ostream& err) {
+    auto m = lang::load_file(file, s.sources, s.sink);
+    if (report(s, err)) {
+        return std::nullopt;
+    }
+    return m;
+}
+
+void error(std::ostream& err, const std::string& message) {
+    err << "catplan: error: " << message << "\n";
+}
+
+// Prints to stdout, or writes the whole text to a file (through a temporary file and a rename).
+int emit(const std::string& text, const std::string& output, std::ostream& out, std::ostream& err) {
+    if (output.empty() || output == "-") {
+        out << text;
+        return kOk;
+    }
+    std::string why;
+    if (!write_file_atomically(output, text, why)) {
+        error(err, why);
+        return kBadInput;
+    }
+    return kOk;
+}
+
+std::string declared_names(const lang::Module& m) {
+    std::string names;
+    for (const auto& d : m.declarations()) {
+        names += (names.empty() ? "" : ", ") + d.name;
+    }
+    return names.empty() ? "none" : names;
+}
+
+std::string_view kind_name(lang::DeclKind kind) {
+    switch (kind) {
+    case lang::DeclKind::Schema:
+        return "a schema";
+    case lang::DeclKind::Instance:
+        return "an instance";
+    case lang::DeclKind::Rule:
+        return "a rule";
+    case lang::DeclKind::Domain:
+        return "a domain";
+    case lang::DeclKind::Problem:
+        return "a problem";
+    }
+    return "a declaration";
+}
+
+// The declaration `name` of the wanted kind, or an error message on err.
+const lang::Declaration* find_declaration(const lang::Module& m, const std::string& file,
+                                          const std::string& name,
+                                          std::optional<lang::DeclKind> kind, std::ostream& err) {
+    const auto* d = m.find(name);
+    if (d == nullptr) {
+        error(err, fmt::format("'{}' declares nothing named '{}' (declared: {})", file, name,
+                               declared_names(m)));
+        return nullptr;
+    }
+    if (kind && d->kind != *kind) {
+        error(err, fmt::format("'{}' is {}, not {}", name, kind_name(d->kind), kind_name(*kind)));
+        return nullptr;
+    }
+    return d;
+}
+
+// A rule declared at top level or inside a domain of the module.
+const rewrite::Rule* find_rule(const lang::Module& m, const std::string& name) {
+    for (const auto& d : m.declarations()) {
+        if (d.kind == lang::DeclKind::Rule && d.name == name) {
+            return d.rule.get();
+        }
+        if (d.kind == lang::DeclKind::Domain) {
+            if (const auto* r = d.domain->find_rule(name)) {
+                return r;
+            }
+        }
+    }
+    return nullptr;
+}
+
+// The problem `problem_name` of FILE, checked against `--domain` when one is given.
+plan::ProblemPtr load_problem(Session& s, const std::string& file, const std::string& domain_name,
+                              const std::string& problem_name, std::ostream& err) {
+    auto m = load(s, file, err);
+    if (!m) {
+        return nullptr;
+    }
+    const auto* p = find_declaration(*m, file, problem_name, lang::DeclKind::Problem, err);
+    if (p == nullptr) {
+        return nullptr;
+    }
+    if (!domain_name.empty()) {
+        const auto* d = find_declaration(*m, file, domain_name, lang::DeclKind::Domain, err);
+        if (d == nullptr) {
+            return nullptr;
+        }
+        if (d->domain != p->problem->domain) {
+            error(err, fmt::format("problem '{}' is on domain '{}', not '{}'", problem_name,
+                                   p->problem->domain->name, domain_name));
+            return nullptr;
+        }
+    }
+    return p->problem;
+}
+
+std::optional<int> CommandTable::run_parsed(std::ostream& out, std::ostream& err) const {
+    for (const auto& [command, run] : entries_) {
+        if (command->parsed()) {
+            return run(out, err);
+        }
+    }
+    return std::nullopt;
+}
+
+} // namespace catplan::cli

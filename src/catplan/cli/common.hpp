@@ -1,0 +1,85 @@
+#pragma once
+// What every subcommand of the command line shares: loading files with their diagnostics, finding
+// declarations, writing output, and the table that registers subcommands. Each group of
+// subcommands lives in its own file and adds itself to the table (commands.cpp, *_commands.cpp).
+
+#include "catplan/base/diagnostic.hpp"
+#include "catplan/base/source.hpp"
+#include "catplan/lang/module.hpp"
+#include "catplan/plan/domain.hpp"
+#include "catplan/rewrite/rule.hpp"
+
+#include <functional>
+#include <iosfwd>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+namespace CLI {
+class App;
+} // namespace CLI
+
+namespace catplan::cli {
+
+/// Everything one command loaded: the sources outlive the diagnostics that point into them.
+struct Session {
+    SourceManager sources;
+    DiagnosticSink sink{sources};
+};
+
+/// Prints the diagnostics collected so far; returns true when there were errors.
+bool report(const Session& s, std::ostream& err);
+
+/// Loads a file and its imports; nullopt (with every diagnostic printed) when it has errors.
+std::optional<lang::Module> load(Session& s, const std::string& file, std::ostream& err);
+
+/// Prints `catplan: error: message`.
+void error(std::ostream& err, const std::string& message);
+
+/// Prints to stdout, or writes the whole text to a file (through a temporary file and a rename).
+int emit(const std::string& text, const std::string& output, std::ostream& out, std::ostream& err);
+
+/// The names a module declares, comma-separated ("none" when it declares nothing).
+std::string declared_names(const lang::Module& m);
+
+/// "a schema", "an instance", ... for messages.
+std::string_view kind_name(lang::DeclKind kind);
+
+/// The declaration `name` of the wanted kind, or nullptr with an error message on err.
+const lang::Declaration* find_declaration(const lang::Module& m, const std::string& file,
+                                          const std::string& name,
+                                          std::optional<lang::DeclKind> kind, std::ostream& err);
+
+/// A rule declared at top level or inside a domain of the module, or nullptr.
+const rewrite::Rule* find_rule(const lang::Module& m, const std::string& name);
+
+/// The problem `problem_name` of FILE, checked against `domain_name` when it is not empty;
+/// nullptr with every error printed.
+plan::ProblemPtr load_problem(Session& s, const std::string& file, const std::string& domain_name,
+                              const std::string& problem_name, std::ostream& err);
+
+/// The subcommands and what runs each when it is the one parsed.
+class CommandTable {
+public:
+    using Run = std::function<int(std::ostream& out, std::ostream& err)>;
+
+    /// Registers `run` for the (leaf) subcommand `command`.
+    void add(CLI::App* command, Run run) { entries_.emplace_back(command, std::move(run)); }
+
+    /// Runs the parsed subcommand's function; nullopt when none was parsed.
+    std::optional<int> run_parsed(std::ostream& out, std::ostream& err) const;
+
+private:
+    std::vector<std::pair<CLI::App*, Run>> entries_;
+};
+
+/// Adds `migrate` and `migrate-domain` (migrate_commands.cpp).
+void add_migrate_commands(CLI::App& app, CommandTable& table);
+/// Adds `transfer` (transfer_commands.cpp).
+void add_transfer_commands(CLI::App& app, CommandTable& table);
+/// Adds `pddl import|export` and PDDL input to `plan` and `validate` (pddl_commands.cpp).
+void add_pddl_commands(CLI::App& app, CommandTable& table);
+
+} // namespace catplan::cli
