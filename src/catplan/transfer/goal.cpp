@@ -1,0 +1,262 @@
+#include "catplan/transfer/goal.hpp"
+
+#include "catplan/base/assert.hpp"
+
+#include <algorithm>
+#include <fmt/format.h>
+#include <numeric>
+
+namespace catplan::transfer {
+namespace {
+
+using acset::ACSet;
+using acset::Value;
+
+struct Statement {
+    enum class Kind : std::uint8_t { Part, Hom, Attr };
+    Kind kind = Kind::Part;
+    std::size_t part = 0;  // index into the goal's part list
+    std::size_t other = 0; // Hom: the index of f(part)
+    HomId hom;
+    AttrId attr;
+    Value value;
+    std::string text;
+};
+
+struct GoalPart {
+    ObId ob;
+    Part p = 0;
+};
+
+// The goal read as statements over an indexed list of its parts.
+struct Goal {
+    std::vector<GoalPart> parts;
+    std::vector<std::vector<std::size_t>> index; // [ob][p] -> index in parts
+    std::vector<Statement> statements;
+};
+
+Goal read_goal(const ACSet& g) {
+    const auto& s = g.schema();
+    Goal out;
+    out.index.resize(s.num_obs());
+    for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
+        for (Part p = 0; p < g.num_parts(ObId(o)); ++p) {
+            out.index[o].push_back(out.parts.size());
+            out.parts.push_back({ObId(o), p});
+        }
+    }
+    for (std::size_t i = 0; i < out.parts.size(); ++i) {
+        auto [ob, p] = out.parts[i];
+        std::string label = g.part_label(ob, p);
+        Statement st;
+        st.part = i;
+        st.text = fmt::format("{} {}", s.ob(ob).name, label);
+        out.statements.push_back(st);
+        for (HomId f : s.homs_from(ob)) {
+            Part q = g.subpart(f, p);
+            if (q == kNoPart) {
+                continue;
+            }
+            Statement h;
+            h.kind = Statement::Kind::Hom;
+            h.part = i;
+            h.hom = f;
+            h.other = out.index[s.hom(f).codom.index()][q];
+            h.text =
+                fmt::format("{}({}) == {}", s.hom(f).name, label, g.part_label(s.hom(f).codom, q));
+            out.statements.push_back(h);
+        }
+        for (AttrId a : s.attrs_from(ob)) {
+            const Value& v = g.subpart(a, p);
+            if (!v.is_concrete()) {
+                continue;
+            }
+            Statement at;
+            at.kind = Statement::Kind::Attr;
+            at.part = i;
+            at.attr = a;
+            at.value = v;
+            at.text = fmt::format("{}({}) == {}", s.attr(a).name, label, v.to_string());
+            out.statements.push_back(at);
+        }
+    }
+    return out;
+}
+
+// Branch and bound over the goal's parts in a fixed order; each statement is decided when the
+// later of its parts is.
+class Search {
+public:
+    Search(const Goal& goal, const ACSet& x, std::uint64_t node_limit)
+        : goal_(goal), x_(x), node_limit_(node_limit) {
+        order_parts();
+        attach_statements();
+        assign_.assign(goal_.parts.size(), kNoPart);
+        used_.resize(x.schema().num_obs());
+        for (std::uint32_t o = 0; o < x.schema().num_obs(); ++o) {
+            used_[o].assign(x.num_parts(ObId(o)), false);
+        }
+        best_assign_ = assign_;
+    }
+
+    void run() {
+        if (!goal_.statements.empty()) {
+            step(0, 0);
+        }
+    }
+
+    std::size_t best() const { return best_; }
+
+    bool exact() const { return exact_; }
+
+    // Whether statement i holds under the best assignment.
+    bool holds(const Statement& st) const { return satisfied(st, best_assign_); }
+
+private:
+    static constexpr std::size_t kMaxCandidates = 64;
+
+    void order_parts() {
+        // Parts with the most statements first, then those connected to parts already placed, so
+        // that hom statements are decided early and prune.
+        std::vector<std::size_t> weight(goal_.parts.size(), 0);
+        for (const auto& st : goal_.statements) {
+            ++weight[st.part];
+            if (st.kind == Statement::Kind::Hom) {
+                ++weight[st.other];
+            }
+        }
+        order_.resize(goal_.parts.size());
+        std::iota(order_.begin(), order_.end(), 0);
+        std::stable_sort(order_.begin(), order_.end(),
+                         [&](std::size_t a, std::size_t b) { return weight[a] > weight[b]; });
+        position_.assign(goal_.parts.size(), 0);
+        for (std::size_t k = 0; k < order_.size(); ++k) {
+            position_[order_[k]] = k;
+        }
+    }
+
+    void attach_statements() {
+        at_.resize(order_.size());
+        for (std::size_t i = 0; i < goal_.statements.size(); ++i) {
+            const auto& st = goal_.statements[i];
+            std::size_t k = position_[st.part];
+            if (st.kind == Statement::Kind::Hom) {
+                k = std::max(k, position_[st.other]);
+            }
+            at_[k].push_back(i);
+        }
+        remaining_.assign(order_.size() + 1, 0);
+        for (std::size_t k = order_.size(); k-- > 0;) {
+            remaining_[k] = remaining_[k + 1] + at_[k].size();
+        }
+    }
+
+    bool satisfied(const Statement& st, const std::vector<Part>& a) const {
+        Part p = a[st.part];
+        if (p == kNoPart) {
+            return false;
+        }
+        switch (st.kind) {
+        case Statement::Kind::Part:
+            return true;
+        case Statement::Kind::Hom:
+            return a[st.other] != kNoPart && x_.subpart(st.hom, p) == a[st.other];
+        case Statement::Kind::Attr:
+            return x_.subpart(st.attr, p) == st.value;
+        }
+        return false;
+    }
+
+    std::size_t gain(std::size_t k) const {
+        std::size_t g = 0;
+        for (std::size_t i : at_[k]) {
+            g += satisfied(goal_.statements[i], assign_) ? 1 : 0;
+        }
+        return g;
+    }
+
+    void step(std::size_t k, std::size_t score) {
+        if (have_best_ && (best_ == goal_.statements.size() || score + remaining_[k] <= best_)) {
+            return;
+        }
+        if (node_limit_ != 0 && ++nodes_ > node_limit_) {
+            exact_ = false;
+            return;
+        }
+        if (k == order_.size()) {
+            if (!have_best_ || score > best_) {
+                have_best_ = true;
+                best_ = score;
+                best_assign_ = assign_;
+            }
+            return;
+        }
+        const GoalPart& gp = goal_.parts[order_[k]];
+        auto& used = used_[gp.ob.index()];
+        // Candidates with their gains, best first; "unassigned" is tried last.
+        std::vector<std::pair<std::size_t, Part>> cands;
+        for (Part c = 0; c < used.size(); ++c) {
+            if (!used[c]) {
+                assign_[order_[k]] = c;
+                cands.emplace_back(gain(k), c);
+            }
+        }
+        assign_[order_[k]] = kNoPart;
+        std::stable_sort(cands.begin(), cands.end(),
+                         [](const auto& a, const auto& b) { return a.first > b.first; });
+        if (cands.size() > kMaxCandidates) {
+            cands.resize(kMaxCandidates);
+            exact_ = false;
+        }
+        for (auto [g, c] : cands) {
+            assign_[order_[k]] = c;
+            used[c] = true;
+            step(k + 1, score + g);
+            used[c] = false;
+        }
+        assign_[order_[k]] = kNoPart;
+        step(k + 1, score + gain(k));
+    }
+
+    const Goal& goal_;
+    const ACSet& x_;
+    std::uint64_t node_limit_;
+    std::uint64_t nodes_ = 0;
+    std::vector<std::size_t> order_, position_;
+    std::vector<std::vector<std::size_t>> at_;
+    std::vector<std::size_t> remaining_;
+    std::vector<Part> assign_, best_assign_;
+    std::vector<std::vector<bool>> used_;
+    std::size_t best_ = 0;
+    bool have_best_ = false;
+    bool exact_ = true;
+};
+
+} // namespace
+
+std::vector<std::string> goal_statements(const ACSet& goal) {
+    std::vector<std::string> out;
+    for (auto& st : read_goal(goal).statements) {
+        out.push_back(std::move(st.text));
+    }
+    return out;
+}
+
+GoalSatisfaction goal_satisfaction(const ACSet& goal, const ACSet& x, std::uint64_t node_limit) {
+    CATPLAN_ASSERT(&goal.schema() == &x.schema(), "goal and state on different schemas");
+    Goal g = read_goal(goal);
+    Search search(g, x, node_limit);
+    search.run();
+    GoalSatisfaction out;
+    out.total = g.statements.size();
+    out.satisfied = search.best();
+    out.exact = search.exact();
+    for (const auto& st : g.statements) {
+        if (!search.holds(st)) {
+            out.unsatisfied.push_back(st.text);
+        }
+    }
+    return out;
+}
+
+} // namespace catplan::transfer

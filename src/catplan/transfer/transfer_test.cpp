@@ -1,0 +1,284 @@
+#include "catplan/hom/isomorphism.hpp"
+#include "catplan/migrate/migration.hpp"
+#include "catplan/transfer/rename.hpp"
+#include "catplan/transfer/transfer.hpp"
+
+#include <gtest/gtest.h>
+
+namespace catplan::transfer {
+namespace {
+
+using acset::Value;
+using migrate::Query;
+using migrate::Term;
+using schema::Schema;
+using schema::SchemaPtr;
+using schema::ValueKind;
+
+// Source domain: blocks stacked by On facts, each with a colour; move(b, from, to) moves block b
+// from on top of `from` to on top of `to` (no clear conditions: enough to exercise transfer).
+struct Stacks {
+    SchemaPtr s;
+    ObId block, on;
+    HomId on_l, on_r;
+    AttrTypeId color_type;
+    AttrId color;
+};
+
+Stacks stacks() {
+    auto s = std::make_shared<Schema>("Stacks");
+    Stacks t;
+    t.block = s->add_ob("Block");
+    t.on = s->add_ob("On");
+    t.on_l = s->add_hom("on_l", t.on, t.block);
+    t.on_r = s->add_hom("on_r", t.on, t.block);
+    t.color_type = s->add_attr_type("Color", ValueKind::String);
+    t.color = s->add_attr("hasColor", t.block, t.color_type);
+    t.s = s;
+    return t;
+}
+
+rewrite::RulePtr move_rule(const Stacks& t) {
+    auto rule = std::make_shared<rewrite::Rule>(t.s);
+    rule->name = "move";
+    for (ACSet* x : {&rule->L, &rule->K, &rule->R}) {
+        for (const char* n : {"b", "from", "to"}) {
+            x->add_part(t.block, n);
+        }
+    }
+    Part o = rule->L.add_part(t.on, "o");
+    rule->L.set_subpart(t.on_l, o, 0);
+    rule->L.set_subpart(t.on_r, o, 1);
+    Part o2 = rule->R.add_part(t.on, "o2");
+    rule->R.set_subpart(t.on_l, o2, 0);
+    rule->R.set_subpart(t.on_r, o2, 2);
+    rule->l = hom::identity(rule->K);
+    rule->r = hom::identity(rule->K);
+    rule->parameters = {{"b", t.block, 0}, {"from", t.block, 1}, {"to", t.block, 2}};
+    EXPECT_TRUE(rewrite::check_rule(*rule).empty());
+    return rule;
+}
+
+ACSet blocks_state(const Stacks& t, const std::vector<std::pair<Part, Part>>& ons) {
+    ACSet x(t.s);
+    const char* names[] = {"A", "B", "C", "D"};
+    const char* colors[] = {"purple", "red", "purple", "green"};
+    for (int i = 0; i < 4; ++i) {
+        Part p = x.add_part(t.block, names[i]);
+        x.set_subpart(t.color, p, Value::string(colors[i]));
+    }
+    for (auto [top, below] : ons) {
+        Part o = x.add_part(t.on);
+        x.set_subpart(t.on_l, o, top);
+        x.set_subpart(t.on_r, o, below);
+    }
+    return x;
+}
+
+// A on B, then move A onto C, then B onto D.
+struct Fixture {
+    Stacks t = stacks();
+    plan::ProblemPtr problem;
+    plan::Plan plan;
+
+    Fixture() {
+        auto domain = std::make_shared<plan::Domain>();
+        domain->name = "Moves";
+        domain->schema = t.s;
+        domain->rules = {move_rule(t)};
+        auto p = std::make_shared<plan::Problem>();
+        p->name = "P";
+        p->domain = domain;
+        p->initial = std::make_shared<ACSet>(blocks_state(t, {{0, 1}, {1, 3}}));
+        ACSet goal(t.s);
+        Part a = goal.add_part(t.block, "a");
+        Part c = goal.add_part(t.block, "c");
+        goal.set_subpart(t.color, a, Value::string("purple"));
+        goal.set_subpart(t.color, c, Value::string("purple"));
+        Part o = goal.add_part(t.on, "o");
+        goal.set_subpart(t.on_l, o, a);
+        goal.set_subpart(t.on_r, o, c);
+        p->goal = std::make_shared<ACSet>(std::move(goal));
+        problem = p;
+        plan.steps = {{"move", {"A", "B", "C"}, {}}, {"move", {"B", "D", "A"}, {}}};
+    }
+};
+
+// Target: Things and Rels, a renaming of the source (a delta map).
+SchemaMap renaming_map(const Stacks& t, bool swap) {
+    auto s = std::make_shared<Schema>("Things");
+    ObId thing = s->add_ob("Thing");
+    ObId rel = s->add_ob("Rel");
+    HomId top = s->add_hom("top", rel, thing);
+    HomId below = s->add_hom("below", rel, thing);
+    AttrTypeId paint = s->add_attr_type("Paint", ValueKind::String);
+    AttrId painted = s->add_attr("painted", thing, paint);
+    SchemaMap f(s, t.s);
+    f.map_ob(thing, Query::representable(t.s, t.block, "x"));
+    f.map_ob(rel, t.on);
+    f.map_hom_path(top, {swap ? t.on_r : t.on_l});
+    f.map_hom_path(below, {swap ? t.on_l : t.on_r});
+    f.map_attr_type(paint, t.color_type);
+    f.map_attr(painted, Term::path("x", {}, t.color));
+    for (const auto& p : f.finish()) {
+        ADD_FAILURE() << p.message;
+    }
+    return f;
+}
+
+// Target: Items on Items, with the purple blocks also Bread (a conjunctive map).
+struct Kitchen {
+    SchemaPtr s;
+    ObId item, bread, in;
+    HomId in_l, in_r, bread_is_item;
+};
+
+Kitchen kitchen() {
+    auto s = std::make_shared<Schema>("Kitchen");
+    Kitchen k;
+    k.item = s->add_ob("Item");
+    k.bread = s->add_ob("BreadSliced");
+    k.in = s->add_ob("InReceptacle");
+    k.in_l = s->add_hom("in_l", k.in, k.item);
+    k.in_r = s->add_hom("in_r", k.in, k.item);
+    k.bread_is_item = s->add_hom("breadIsItem", k.bread, k.item);
+    k.s = s;
+    return k;
+}
+
+SchemaMap kitchen_map(const Stacks& t, const Kitchen& k) {
+    SchemaMap f(k.s, t.s);
+    f.map_ob(k.item, t.block);
+    f.map_ob(k.in, t.on);
+    f.map_hom_path(k.in_l, {t.on_l});
+    f.map_hom_path(k.in_r, {t.on_r});
+    Query q(t.s);
+    q.add_variable("block", t.block);
+    q.add_equation(Term::path("block", {}, t.color), Term::constant(Value::string("purple")));
+    f.map_ob(k.bread, std::move(q));
+    f.map_hom(k.bread_is_item, {Term::path("block")});
+    EXPECT_TRUE(f.finish().empty());
+    return f;
+}
+
+std::vector<std::string> target_plan(const TransferResult& r) {
+    std::vector<std::string> out;
+    for (const auto& s : r.steps) {
+        out.push_back(s.target.to_string());
+    }
+    return out;
+}
+
+TEST(Transfer, DeltaMapGivesTheMigratedStates) {
+    Fixture fx;
+    SchemaMap f = renaming_map(fx.t, false);
+    TransferOptions opt;
+    opt.keep_states = true;
+    auto r = transfer_plan(f, *fx.problem, fx.plan, opt);
+    EXPECT_EQ(r.migration, MigrationKind::Delta);
+    EXPECT_TRUE(r.source_valid);
+    ASSERT_TRUE(r.valid) << r.reason;
+    EXPECT_EQ(target_plan(r), (std::vector<std::string>{"move(A, B, C)", "move(B, D, A)"}));
+    ASSERT_EQ(r.target_states.size(), 3u);
+    ASSERT_EQ(r.source_states.size(), 3u);
+    // Y_i = Δ_F(X_i) at every step (paper Appendix A).
+    for (std::size_t i = 0; i < 3; ++i) {
+        EXPECT_TRUE(hom::is_isomorphic(r.target_states[i], migrate::migrate(f, r.source_states[i])))
+            << "step " << i;
+    }
+    EXPECT_EQ(r.goal.satisfied, r.goal.total);
+    EXPECT_EQ(r.goal.total, 7u); // 2 blocks, 2 colours, 1 fact with 2 homs
+}
+
+TEST(Transfer, SwappedHomsTransferConsistently) {
+    // Swapping top and below is a functor too: the plan still transfers (both the actions and the
+    // goal are read through the same map).
+    Fixture fx;
+    auto r = transfer_plan(renaming_map(fx.t, true), *fx.problem, fx.plan);
+    EXPECT_TRUE(r.valid) << r.reason;
+}
+
+TEST(Transfer, ConjunctiveMapCarriesMatchesByName) {
+    Fixture fx;
+    Kitchen k = kitchen();
+    SchemaMap f = kitchen_map(fx.t, k);
+    auto r = transfer_plan(f, *fx.problem, fx.plan);
+    EXPECT_EQ(r.migration, MigrationKind::Conjunctive);
+    ASSERT_TRUE(r.valid) << r.reason;
+    EXPECT_EQ(target_plan(r), (std::vector<std::string>{"move(A, B, C)", "move(B, D, A)"}));
+    EXPECT_EQ(r.steps[0].target_bindings.find("b ↦ A"), 0u) << r.steps[0].target_bindings;
+    // The purple blocks A and C are bread in the target.
+    ASSERT_TRUE(r.final_state);
+    EXPECT_EQ(r.final_state->num_parts(k.bread), 2u);
+    EXPECT_DOUBLE_EQ(r.goal.fraction(), 1.0);
+}
+
+TEST(Transfer, RenameByTypeNamesPartsAfterTheirMostSpecificType) {
+    Fixture fx;
+    Kitchen k = kitchen();
+    SchemaMap f = kitchen_map(fx.t, k);
+    TransferOptions opt;
+    opt.rename_by_type = true;
+    auto r = transfer_plan(f, *fx.problem, fx.plan, opt);
+    ASSERT_TRUE(r.valid) << r.reason;
+    // A and C are bread (is-a Item); B and D only items.
+    EXPECT_EQ(target_plan(r), (std::vector<std::string>{"move(bread1, item1, bread2)",
+                                                        "move(item1, item2, bread1)"}));
+    ACSet y0 = migrate::migrate(f, *fx.problem->initial);
+    auto names = names_by_type(y0);
+    EXPECT_EQ(names.at("A"), "bread1");
+    EXPECT_EQ(names.at("D"), "item2");
+}
+
+TEST(Transfer, ParametersTheMapCannotSeeAreReported) {
+    Fixture fx;
+    // Only purple blocks are items here, and move's blocks have no colour in its precondition:
+    // the migrated action keeps none of its parameters, which the transfer reports.
+    auto s = std::make_shared<Schema>("Purple");
+    ObId item = s->add_ob("Item");
+    SchemaMap f(s, fx.t.s);
+    Query q(fx.t.s);
+    q.add_variable("block", fx.t.block);
+    q.add_equation(Term::path("block", {}, fx.t.color), Term::constant(Value::string("purple")));
+    f.map_ob(item, std::move(q));
+    ASSERT_TRUE(f.finish().empty());
+    auto r = transfer_plan(f, *fx.problem, fx.plan);
+    ASSERT_EQ(r.steps.size(), 2u);
+    EXPECT_EQ(r.steps[0].target.to_string(), "move()");
+    EXPECT_EQ(r.steps[0].lost_parameters, (std::vector<std::string>{"b", "from", "to"}));
+}
+
+TEST(Transfer, InvalidSourcePlanIsReported) {
+    Fixture fx;
+    plan::Plan bad;
+    bad.steps = {{"move", {"A", "C", "D"}, {}}};
+    auto r = transfer_plan(renaming_map(fx.t, false), *fx.problem, bad);
+    EXPECT_FALSE(r.source_valid);
+    EXPECT_FALSE(r.valid);
+    EXPECT_NE(r.reason.find("the source plan is invalid"), std::string::npos) << r.reason;
+}
+
+TEST(Transfer, ReplanFindsAPlanAndMeasuresTheEditDistance) {
+    Fixture fx;
+    auto r = transfer_plan(renaming_map(fx.t, false), *fx.problem, fx.plan);
+    ASSERT_TRUE(r.valid);
+    plan::SearchOptions opt;
+    auto rp = replan(r, opt);
+    ASSERT_EQ(rp.search.status, plan::SearchStatus::Solved);
+    // One move suffices (A onto C); the transferred plan has one step more.
+    EXPECT_EQ(rp.steps.size(), 1u);
+    EXPECT_EQ(rp.steps[0].to_string(), "move(A, B, C)");
+    EXPECT_EQ(rp.edit_distance, 1u);
+}
+
+TEST(Transfer, EditDistanceCountsWholeSteps) {
+    using S = plan::Step;
+    std::vector<S> a = {{"pickup", {"A"}, {}}, {"stack", {"A", "B"}, {}}};
+    std::vector<S> b = {{"pickup", {"A"}, {}}, {"stack", {"A", "C"}, {}}, {"noop", {}, {}}};
+    EXPECT_EQ(edit_distance(a, b), 2u);
+    EXPECT_EQ(edit_distance(a, a), 0u);
+    EXPECT_EQ(edit_distance({}, b), 3u);
+}
+
+} // namespace
+} // namespace catplan::transfer
