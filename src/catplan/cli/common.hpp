@@ -75,9 +75,9 @@ private:
     std::vector<std::pair<CLI::App*, Run>> entries_;
 };
 
-/// Adds `migrate` and `migrate-domain` (migrate_commands.cpp).
+/// Adds `migrate` (migrate_commands.cpp).
 void add_migrate_commands(CLI::App& app, CommandTable& table);
-/// Adds `transfer` (transfer_commands.cpp).
+/// Adds `transfer` and `migrate-domain` (transfer_commands.cpp).
 void add_transfer_commands(CLI::App& app, CommandTable& table);
 /// Adds `pddl import|export` and PDDL input to `plan` and `validate` (pddl_commands.cpp).
 void add_pddl_commands(CLI::App& app, CommandTable& table);
