@@ -499,6 +499,7 @@ int run(int argc, char** argv, std::ostream& out, std::ostream& err) {
     add_migrate_commands(app, table);
     add_transfer_commands(app, table);
     add_pddl_commands(app, table);
+    add_report_commands(app, table);
 
     try {
         app.parse(argc, argv);

@@ -79,6 +79,8 @@ private:
 void add_migrate_commands(CLI::App& app, CommandTable& table);
 /// Adds `transfer` and `migrate-domain` (transfer_commands.cpp).
 void add_transfer_commands(CLI::App& app, CommandTable& table);
+/// Adds `report` (report_commands.cpp).
+void add_report_commands(CLI::App& app, CommandTable& table);
 /// Adds `pddl import|export` and PDDL input to `plan` and `validate` (pddl_commands.cpp).
 void add_pddl_commands(CLI::App& app, CommandTable& table);
 
