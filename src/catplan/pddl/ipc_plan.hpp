@@ -1,0 +1,65 @@
+#pragma once
+// IPC plan files, and validating them against an imported PDDL problem.
+//
+// An IPC plan is one ground action per line, `(unstack e d)`, with `;` comments; the last line of
+// a plan written by catplan is `; cost = N (unit cost)`, as IPC planners write it. Timed plans
+// (`0.000: (unstack e d) [1]`) are read too, the time and duration ignored.
+//
+// Validation replays the plan with PDDL's meaning on the imported rules: a step's arguments pick
+// the variants of its action consistent with them (import.hpp), and the one whose match exists
+// applies. When none does, the step failed because a PDDL precondition does not hold, and the
+// reason names the first such precondition as written in the domain, ground:
+// `step 3 (unstack e d): precondition (on e d) does not hold`.
+
+#include "catplan/base/diagnostic.hpp"
+#include "catplan/pddl/import.hpp"
+#include "catplan/plan/domain.hpp"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace catplan::pddl {
+
+/// One ground action of an IPC plan.
+struct IpcStep {
+    std::string action;
+    std::vector<std::string> args;
+    SourceRange range;
+
+    /// "(unstack e d)".
+    std::string to_string() const;
+};
+
+using IpcPlan = std::vector<IpcStep>;
+
+/// Reads an IPC plan file; every syntax error goes to sink; nullopt when there was one.
+std::optional<IpcPlan> parse_ipc_plan(std::uint32_t file, const SourceManager& sources,
+                                      DiagnosticSink& sink);
+
+/// The plan one step per line, ending with `; cost = N (unit cost)`.
+std::string write_ipc_plan(const IpcPlan& plan);
+
+/// The PDDL steps of a plan found on the imported domain (rule variants back to their actions);
+/// fails when a step's rule is not one of the import's.
+Result<IpcPlan> to_ipc_plan(const Import& import, const plan::Plan& plan);
+
+struct IpcValidation {
+    bool valid = false;
+    bool goal_reached = false;
+    std::optional<std::size_t> failed_step; // 0-based
+    /// "step 3 (unstack e d): precondition (on e d) does not hold" or "goal not reached: ...".
+    std::string reason;
+    /// The rule-level plan (the variant applied at each step that applied).
+    plan::Plan plan;
+    /// The last state reached.
+    std::optional<acset::ACSet> final_state;
+};
+
+/// Replays an IPC plan on the import's problem and checks its goal.
+IpcValidation validate_ipc_plan(const Import& import, const IpcPlan& plan);
+
+/// Whether a ground atom holds in a state of the imported schema.
+bool holds(const Import& import, const acset::ACSet& x, const Atom& atom);
+
+} // namespace catplan::pddl

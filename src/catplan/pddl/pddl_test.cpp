@@ -1,0 +1,275 @@
+#include "catplan/pddl/export.hpp"
+#include "catplan/pddl/import.hpp"
+#include "catplan/pddl/ipc_plan.hpp"
+#include "catplan/plan/search.hpp"
+
+#include <gtest/gtest.h>
+
+#include <functional>
+
+namespace catplan::pddl {
+namespace {
+
+std::string data(const std::string& name) {
+    return std::string(CATPLAN_SOURCE_DIR) + "/tests/pddl/" + name;
+}
+
+/// Everything loaded from files, with the sources kept alive for diagnostics.
+struct Loaded {
+    SourceManager sources;
+    DiagnosticSink sink{sources};
+    std::optional<Domain> domain;
+    std::optional<Problem> problem;
+    std::optional<Import> import;
+
+    std::string errors() const { return sink.render(); }
+};
+
+std::unique_ptr<Loaded> load_text(const std::string& domain_text, const std::string& problem_text) {
+    auto l = std::make_unique<Loaded>();
+    l->domain =
+        parse_domain(l->sources.add_buffer("domain.pddl", domain_text), l->sources, l->sink);
+    if (!l->domain) {
+        return l;
+    }
+    if (!problem_text.empty()) {
+        l->problem = parse_problem(l->sources.add_buffer("problem.pddl", problem_text), *l->domain,
+                                   l->sources, l->sink);
+        if (!l->problem) {
+            return l;
+        }
+    }
+    l->import = import_pddl(*l->domain, l->problem ? &*l->problem : nullptr, l->sink);
+    return l;
+}
+
+std::string read(const std::string& path) {
+    SourceManager sm;
+    auto f = sm.add_file(path);
+    EXPECT_TRUE(f.has_value()) << path;
+    return f ? std::string(sm.text(*f)) : "";
+}
+
+std::unique_ptr<Loaded> load(const std::string& domain, const std::string& problem) {
+    return load_text(read(data(domain)), problem.empty() ? "" : read(data(problem)));
+}
+
+IpcPlan plan_text(const std::string& text) {
+    SourceManager sm;
+    DiagnosticSink sink(sm);
+    auto p = parse_ipc_plan(sm.add_buffer("plan", text), sm, sink);
+    EXPECT_TRUE(p.has_value()) << sink.render();
+    return p.value_or(IpcPlan{});
+}
+
+std::string domain_error(const std::string& file) {
+    auto l = load(file, "");
+    EXPECT_FALSE(l->domain.has_value());
+    return l->errors();
+}
+
+TEST(PddlParse, ReadsTheThreeDomains) {
+    for (auto [d, p] : {std::pair{"blocksworld-domain.pddl", "blocksworld-p01.pddl"},
+                        {"gripper-domain.pddl", "gripper-p01.pddl"},
+                        {"logistics-domain.pddl", "logistics-p01.pddl"}}) {
+        auto l = load(d, p);
+        ASSERT_TRUE(l->import.has_value()) << d << "\n" << l->errors();
+        for (const auto& r : l->import->domain->rules) {
+            EXPECT_TRUE(rewrite::check_rule(*r).empty()) << r->name;
+        }
+    }
+}
+
+TEST(PddlParse, LogisticsTypesFormATree) {
+    auto l = load("logistics-domain.pddl", "");
+    ASSERT_TRUE(l->domain);
+    EXPECT_TRUE(l->domain->is_subtype("truck", "physobj"));
+    EXPECT_TRUE(l->domain->is_subtype("airport", "place"));
+    EXPECT_FALSE(l->domain->is_subtype("place", "airport"));
+    const auto& s = *l->import->domain->schema;
+    EXPECT_TRUE(s.find_hom("truck_is_vehicle").has_value());
+    EXPECT_TRUE(s.find_hom("at_2").has_value());
+}
+
+TEST(PddlErrors, NameTheConstruct) {
+    EXPECT_NE(domain_error("bad-parens.pddl")
+                  .find("domain.pddl:1:1: error: unbalanced "
+                        "parentheses"),
+              std::string::npos)
+        << domain_error("bad-parens.pddl");
+    EXPECT_NE(domain_error("bad-predicate.pddl").find("4:46: error: unknown predicate 'q'"),
+              std::string::npos)
+        << domain_error("bad-predicate.pddl");
+    EXPECT_NE(domain_error("bad-arity.pddl").find("wrong arity: 'p' takes 1 argument, not 2"),
+              std::string::npos);
+    EXPECT_NE(domain_error("bad-type.pddl").find("unknown type 'table'"), std::string::npos);
+    EXPECT_NE(
+        domain_error("bad-requirement.pddl").find("unsupported requirement ':conditional-effects'"),
+        std::string::npos);
+}
+
+TEST(PddlPlans, HandWrittenPlansValidate) {
+    for (auto [d, p, plan] :
+         {std::tuple{"blocksworld-domain.pddl", "blocksworld-p01.pddl", "blocksworld-p01.plan"},
+          {"gripper-domain.pddl", "gripper-p01.pddl", "gripper-p01.plan"},
+          {"logistics-domain.pddl", "logistics-p01.pddl", "logistics-p01.plan"}}) {
+        auto l = load(d, p);
+        ASSERT_TRUE(l->import) << l->errors();
+        auto v = validate_ipc_plan(*l->import, plan_text(read(data(plan))));
+        EXPECT_TRUE(v.valid) << plan << ": " << v.reason;
+    }
+}
+
+TEST(PddlPlans, InvalidPlanFailsAtTheRightStepNamingThePrecondition) {
+    auto l = load("blocksworld-domain.pddl", "blocksworld-p01.pddl");
+    auto v = validate_ipc_plan(*l->import, plan_text(read(data("blocksworld-p01-invalid.plan"))));
+    EXPECT_FALSE(v.valid);
+    ASSERT_EQ(v.failed_step, 2u);
+    EXPECT_EQ(v.reason, "step 3 (unstack c d): precondition (on c d) does not hold");
+}
+
+TEST(PddlPlans, GoalNotReachedNamesTheGoal) {
+    auto l = load("blocksworld-domain.pddl", "blocksworld-p01.pddl");
+    auto v = validate_ipc_plan(*l->import, plan_text("(unstack e d)\n(put-down e)\n"));
+    EXPECT_FALSE(v.valid);
+    EXPECT_TRUE(v.goal_reached == false && !v.failed_step);
+    EXPECT_EQ(v.reason, "goal not reached: (on d e) does not hold");
+}
+
+TEST(PddlPlans, IpcPlanRoundTrip) {
+    auto p = plan_text("0.000: (Unstack E D) [1]\n; comment\n(put-down e)\n");
+    ASSERT_EQ(p.size(), 2u);
+    EXPECT_EQ(p[0].to_string(), "(unstack e d)");
+    EXPECT_EQ(write_ipc_plan(p), "(unstack e d)\n(put-down e)\n; cost = 2 (unit cost)\n");
+}
+
+std::size_t facts(const Import& im, const acset::ACSet& x, const std::string& predicate) {
+    return x.num_parts(im.predicate_ob.at(predicate));
+}
+
+TEST(PddlSemantics, AddingATrueFactKeepsOneFact) {
+    auto l = load("dup-domain.pddl", "dup-p01.pddl");
+    ASSERT_TRUE(l->import) << l->errors();
+    auto v = validate_ipc_plan(*l->import, plan_text("(set-mark a)\n(set-mark a)\n(set-mark b)"));
+    ASSERT_FALSE(v.failed_step) << v.reason;
+    EXPECT_EQ(facts(*l->import, *v.final_state, "mark"), 2u);
+    // One clear-mark makes (mark a) false: no second copy survives.
+    v = validate_ipc_plan(*l->import, plan_text("(set-mark a)\n(clear-mark a)\n(clear-mark a)"));
+    EXPECT_EQ(v.failed_step, 2u);
+    EXPECT_EQ(v.reason, "step 3 (clear-mark a): precondition (mark a) does not hold");
+}
+
+TEST(PddlSemantics, ParametersMayBindTheSameObjectUnlessForbidden) {
+    auto l = load("dup-domain.pddl", "dup-p01.pddl");
+    auto v = validate_ipc_plan(*l->import, plan_text("(connect a a)\n(connect-other a b)"));
+    EXPECT_TRUE(v.valid) << v.reason;
+    v = validate_ipc_plan(*l->import, plan_text("(connect-other a a)"));
+    EXPECT_EQ(v.reason, "step 1 (connect-other a a): precondition (not (= a a)) does not hold");
+    // A negative precondition: (link a a) is now true.
+    v = validate_ipc_plan(*l->import, plan_text("(connect a a)\n(connect a a)"));
+    EXPECT_EQ(v.reason, "step 2 (connect a a): precondition (not (link a a)) does not hold");
+}
+
+TEST(PddlSemantics, PlannerPlansAreValidIpcPlans) {
+    for (auto [d, p] : {std::pair{"blocksworld-domain.pddl", "blocksworld-p01.pddl"},
+                        {"gripper-domain.pddl", "gripper-p01.pddl"},
+                        {"dup-domain.pddl", "dup-p01.pddl"}}) {
+        auto l = load(d, p);
+        ASSERT_TRUE(l->import);
+        plan::SearchOptions opt;
+        opt.search = plan::SearchKind::GreedyBestFirst;
+        opt.heuristic = plan::HeuristicKind::HFF;
+        auto r = plan::find_plan(*l->import->problem, opt);
+        ASSERT_EQ(r.status, plan::SearchStatus::Solved) << d;
+        auto ipc = to_ipc_plan(*l->import, *r.plan);
+        ASSERT_TRUE(ipc.has_value()) << ipc.error();
+        auto v = validate_ipc_plan(*l->import, *ipc);
+        EXPECT_TRUE(v.valid) << d << ": " << v.reason << "\n" << write_ipc_plan(*ipc);
+    }
+}
+
+// ---- PDDL -> catplan -> PDDL keeps the valid plans ---------------------------------------------
+
+/// Every type-correct ground action of the problem.
+std::vector<IpcStep> ground_actions(const Domain& d, const Problem& p) {
+    std::vector<TypedName> objects = d.constants;
+    objects.insert(objects.end(), p.objects.begin(), p.objects.end());
+    std::vector<IpcStep> out;
+    for (const auto& a : d.actions) {
+        std::function<void(IpcStep&)> fill = [&](IpcStep& s) {
+            if (s.args.size() == a.params.size()) {
+                out.push_back(s);
+                return;
+            }
+            for (const auto& o : objects) {
+                if (d.is_subtype(o.type, a.params[s.args.size()].type)) {
+                    s.args.push_back(o.name);
+                    fill(s);
+                    s.args.pop_back();
+                }
+            }
+        };
+        IpcStep s{a.name, {}, {}};
+        fill(s);
+    }
+    return out;
+}
+
+/// The plans of length <= depth whose every step applies, each with whether it reaches the goal.
+std::map<std::string, bool> applicable_plans(const Import& im, std::size_t depth) {
+    std::map<std::string, bool> out;
+    auto actions = ground_actions(im.pddl_domain, *im.pddl_problem);
+    std::function<void(IpcPlan&)> grow = [&](IpcPlan& plan) {
+        auto v = validate_ipc_plan(im, plan);
+        if (v.failed_step) {
+            return;
+        }
+        out[write_ipc_plan(plan)] = v.valid;
+        if (plan.size() == depth) {
+            return;
+        }
+        for (const auto& a : actions) {
+            plan.push_back(a);
+            grow(plan);
+            plan.pop_back();
+        }
+    };
+    IpcPlan empty;
+    grow(empty);
+    return out;
+}
+
+void expect_round_trip_keeps_plans(const std::string& d, const std::string& p, std::size_t depth) {
+    auto l = load(d, p);
+    ASSERT_TRUE(l->import) << l->errors();
+    auto dom = export_domain(*l->import->domain);
+    ASSERT_TRUE(dom.has_value()) << dom.error();
+    auto prob = export_problem(*l->import->problem);
+    ASSERT_TRUE(prob.has_value()) << prob.error();
+    auto back = load_text(*dom, *prob);
+    ASSERT_TRUE(back->import) << back->errors() << *dom << *prob;
+    EXPECT_EQ(back->import->domain->rules.size(), l->import->domain->rules.size()) << *dom;
+    auto before = applicable_plans(*l->import, depth);
+    auto after = applicable_plans(*back->import, depth);
+    EXPECT_GT(before.size(), depth);
+    EXPECT_EQ(before, after) << *dom;
+}
+
+TEST(PddlRoundTrip, BlocksworldKeepsItsPlans) {
+    expect_round_trip_keeps_plans("blocksworld-domain.pddl", "blocksworld-p01.pddl", 3);
+}
+
+TEST(PddlRoundTrip, GripperKeepsItsPlans) {
+    expect_round_trip_keeps_plans("gripper-domain.pddl", "gripper-p01.pddl", 3);
+}
+
+TEST(PddlRoundTrip, LogisticsKeepsItsPlans) {
+    expect_round_trip_keeps_plans("logistics-domain.pddl", "logistics-p01.pddl", 2);
+}
+
+TEST(PddlRoundTrip, EqualityAndNegationKeepTheirPlans) {
+    expect_round_trip_keeps_plans("dup-domain.pddl", "dup-p01.pddl", 3);
+}
+
+} // namespace
+} // namespace catplan::pddl

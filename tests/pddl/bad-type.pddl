@@ -1,0 +1,5 @@
+(define (domain broken)
+  (:requirements :strips :typing)
+  (:types block)
+  (:predicates (p ?x - block))
+  (:action a :parameters (?x - table) :precondition (p ?x) :effect (not (p ?x))))

@@ -1,0 +1,5 @@
+(define (problem dup-p01)
+  (:domain dup)
+  (:objects a b)
+  (:init (mark a))
+  (:goal (and (link a a) (done))))
