@@ -1,4 +1,7 @@
-# The Kitchenworld ontology, verbatim from the paper's appendix (Schema Categories, Kitchenworld).
+# The Kitchenworld ontology, verbatim from the paper's appendix (Schema Categories, Kitchenworld),
+# except that the attribute types declare the value kinds the paper's ontology map gives them
+# (Temperature => Float64, Mass => Float64, Material => String), so that files importing this one
+# can write literals for them.
 
 @present KitchenWorld(FreeSchema) begin
   # Parent Types
@@ -12,9 +15,9 @@
   isEmpty::Hom(Empty, Object)
 
   # Attributes
-  Temperature::AttrType
-  Mass::AttrType
-  Material::AttrType
+  Temperature::AttrType(Float64)
+  Mass::AttrType(Float64)
+  Material::AttrType(String)
 
   # Relations
   InReceptacle::Ob

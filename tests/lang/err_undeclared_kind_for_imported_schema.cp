@@ -1,7 +1,7 @@
 @import "shared_imported.cp"
-@import "../../examples/kitchenworld/kitchenworld.cp"
+@import "kinds_imported.cp"
 
-@acset_colim K(KitchenWorld) begin
-  k::Knife
-  knifeHasMass(k) == 0.5
+@acset_colim K(Weighed) begin
+  k::Thing
+  hasMass(k) == 0.5
 end

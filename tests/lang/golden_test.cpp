@@ -1,8 +1,8 @@
 // Runs one golden case per tests/lang/<case>.cp: the expected output is <case>.out (for each
 // declaration its summary and its describe / to_tables form; for a rule its L, K, R and the maps
-// l and r; for a domain the summary of each rule) or <case>.err (the rendered
-// diagnostics). File names are relative to the repository root so the goldens hold no absolute
-// paths. CATPLAN_UPDATE_GOLDEN=1 rewrites the expectation instead of comparing.
+// l and r; for a domain the summary of each rule; for a map each generator's image) or <case>.err
+// (the rendered diagnostics). File names are relative to the repository root so the goldens hold no
+// absolute paths. CATPLAN_UPDATE_GOLDEN=1 rewrites the expectation instead of comparing.
 
 #include "catplan/acset/printer.hpp"
 #include "catplan/lang/module.hpp"
@@ -81,6 +81,8 @@ std::string print_declaration(const catplan::lang::Declaration& d) {
         return out + "\n";
     case DeclKind::Problem:
         return out + "\n";
+    case DeclKind::Map:
+        return out + catplan::lang::describe_map(*d.map) + "\n";
     }
     return out;
 }

@@ -59,6 +59,8 @@ int cmd_show(const std::string& file, const std::string& name, std::ostream& out
     }
     if (d->kind == lang::DeclKind::Schema) {
         out << schema::describe(*d->schema);
+    } else if (d->kind == lang::DeclKind::Map) {
+        out << lang::summarize(*d) << "\n" << lang::describe_map(*d->map);
     } else if (d->kind != lang::DeclKind::Instance) {
         out << lang::summarize(*d) << "\n";
     } else {

@@ -63,6 +63,8 @@ std::string_view kind_name(lang::DeclKind kind) {
         return "a domain";
     case lang::DeclKind::Problem:
         return "a problem";
+    case lang::DeclKind::Map:
+        return "a map";
     }
     return "a declaration";
 }

@@ -3,7 +3,9 @@
 #include "catplan/base/assert.hpp"
 #include "catplan/base/union_find.hpp"
 #include "catplan/hom/hom_search.hpp"
+#include "catplan/lang/detail/map_elaboration.hpp"
 #include "catplan/lang/syntax.hpp"
+#include "catplan/migrate/schema_map.hpp"
 #include "catplan/rewrite/rule.hpp"
 
 #include <algorithm>
@@ -198,7 +200,7 @@ private:
     void elaborate_file(const ParsedFile& parsed, bool imported) {
         // Schemas first, then kinds are inferred from every literal of the file, then instances:
         // so the order of declarations in a file does not change the meaning.
-        std::vector<const MacroCall*> instances, rules, domains, problems;
+        std::vector<const MacroCall*> instances, rules, domains, problems, maps, composites;
         for (const auto& form : parsed.forms) {
             if (form.name == "import") {
                 continue;
@@ -207,8 +209,12 @@ private:
                 elaborate_schema(form, imported);
             } else if (form.name == "acset_colim" || form.name == "acset") {
                 instances.push_back(&form);
+            } else if (form.name == "migration" && is_map_form(form)) {
+                maps.push_back(&form);
             } else if (form.name == "rule" || form.name == "migration") {
                 rules.push_back(&form);
+            } else if (form.name == "compose") {
+                composites.push_back(&form);
             } else if (form.name == "domain") {
                 domains.push_back(&form);
             } else if (form.name == "problem") {
@@ -216,8 +222,8 @@ private:
             } else {
                 sink_->error(form.name_range,
                              fmt::format("unknown macro '@{}' (expected @present, @acset_colim, "
-                                         "@acset, @rule, @migration, @domain, @problem or "
-                                         "@import)",
+                                         "@acset, @rule, @migration, @compose, @domain, "
+                                         "@problem or @import)",
                                          form.name));
             }
         }
@@ -287,6 +293,13 @@ private:
         }
         for (const auto* form : problems) {
             elaborate_problem(*form, imported);
+        }
+        // Maps refer to schemas only; composites to maps.
+        for (const auto* form : maps) {
+            elaborate_map(*form, imported);
+        }
+        for (const auto* form : composites) {
+            elaborate_compose(*form, imported);
         }
         local_schemas_.clear();
     }
@@ -2440,6 +2453,130 @@ private:
         d.goal_name = names[1];
         d.problem = std::move(problem);
         module_.add(std::move(d));
+    }
+
+    // ---- ontology maps (@migration Name(Target, Source), @compose) -----------------------------
+
+    // An ontology map rather than a rule: `@migration Name(Target, Source) begin ... end` or
+    // `Name = @migration Target Source begin ... end` (a rule names SchRule or one schema).
+    static bool is_map_form(const MacroCall& form) {
+        const auto& h = form.header;
+        if (form.assigned.empty()) {
+            return h.size() == 1 && h[0].kind == Expr::Kind::Call && h[0].args.size() == 2;
+        }
+        return h.size() == 2 && h[0].kind == Expr::Kind::Name && h[0].text != "SchRule";
+    }
+
+    // The name and the two arguments of `@macro Name(A, B)` or `Name = @macro A B`; false after
+    // reporting a malformed header.
+    bool binary_header(const MacroCall& form, std::string_view usage, std::string& name,
+                       SourceRange& name_range, const Expr*& first, const Expr*& second) {
+        const auto& h = form.header;
+        if (!form.assigned.empty() && h.size() == 2) {
+            name = form.assigned;
+            name_range = form.assigned_range;
+            first = &h[0];
+            second = &h[1];
+        } else if (form.assigned.empty() && h.size() == 1 && h[0].kind == Expr::Kind::Call &&
+                   h[0].args.size() == 2) {
+            name = h[0].text;
+            name_range = h[0].name_range;
+            first = &h[0].args[0];
+            second = &h[0].args[1];
+        } else {
+            sink_->error(form.range, fmt::format("expected {}", usage));
+            return false;
+        }
+        for (const Expr* e : {first, second}) {
+            if (e->kind != Expr::Kind::Name) {
+                sink_->error(e->range, fmt::format("expected a name, found '{}'", to_string(*e)));
+                return false;
+            }
+        }
+        return true;
+    }
+
+    void elaborate_map(const MacroCall& form, bool imported) {
+        detail::MapForm mf;
+        const Expr *target = nullptr, *source = nullptr;
+        if (!binary_header(form, "'@migration Name(Target, Source) begin ... end'", mf.name,
+                           mf.name_range, target, source)) {
+            return;
+        }
+        if (!form.has_body) {
+            sink_->error(form.range, fmt::format("map '{}' needs its entries: '@migration "
+                                                 "{}({}, {}) begin ... end'",
+                                                 mf.name, mf.name, target->text, source->text));
+            return;
+        }
+        auto t = lookup_schema(*target, false);
+        auto s = lookup_schema(*source, false);
+        if (!t || !s || broken_.count(t.get()) || broken_.count(s.get())) {
+            return;
+        }
+        mf.target = t;
+        mf.source = s;
+        mf.body = &form.body;
+        auto map = detail::elaborate_map(mf, *sink_);
+        if (map && claim_name(mf.name, mf.name_range)) {
+            add_map(mf.name, mf.name_range, imported, std::move(map));
+        }
+    }
+
+    void add_map(const std::string& name, SourceRange range, bool imported,
+                 std::shared_ptr<const migrate::SchemaMap> map) {
+        Declaration d;
+        d.kind = DeclKind::Map;
+        d.name = name;
+        d.range = range;
+        d.imported = imported;
+        d.schema = map->target();
+        d.map = std::move(map);
+        module_.add(std::move(d));
+    }
+
+    const Declaration* find_map(const Expr& name) {
+        const Declaration* d = module_.find(name.text);
+        if (d == nullptr || d->kind != DeclKind::Map) {
+            sink_->error(name.range, d == nullptr ? fmt::format("unknown map '{}'", name.text)
+                                                  : fmt::format("'{}' is not a map", name.text));
+            return nullptr;
+        }
+        return d;
+    }
+
+    // `@compose H(F, G)`: H = F ∘ G as functors, so Δ_H migrates along F, then along G.
+    void elaborate_compose(const MacroCall& form, bool imported) {
+        std::string name;
+        SourceRange name_range;
+        const Expr *first = nullptr, *second = nullptr;
+        if (!binary_header(form, "'@compose Name(F, G)' (the map F ∘ G: migrate along F, then G)",
+                           name, name_range, first, second)) {
+            return;
+        }
+        const Declaration* f = find_map(*first);
+        const Declaration* g = find_map(*second);
+        if (f == nullptr || g == nullptr) {
+            return;
+        }
+        if (g->map->source() != f->map->target()) {
+            sink_->error(second->range,
+                         fmt::format("cannot compose: '{}' is a map from {}, so '{}' must be a "
+                                     "map into {}, but it maps into {}",
+                                     first->text, f->map->target()->name(), second->text,
+                                     f->map->target()->name(), g->map->source()->name()));
+            return;
+        }
+        auto h = migrate::compose(*f->map, *g->map);
+        if (!h) {
+            sink_->error(form.range, fmt::format("cannot compose '{}' and '{}': {}", first->text,
+                                                 second->text, h.error()));
+            return;
+        }
+        if (claim_name(name, name_range)) {
+            add_map(name, name_range, imported,
+                    std::make_shared<const migrate::SchemaMap>(std::move(*h)));
+        }
     }
 
     SourceManager& sources_;

@@ -6,8 +6,9 @@
 //   syntax.hpp   tokens and a generic AST of macro calls (no meaning attached)
 //   module.hpp   elaboration per macro: @present -> Schema, @acset_colim / @acset -> ACSet,
 //                @rule / @migration -> rewrite::Rule, @domain -> plan::Domain,
-//                @problem -> plan::Problem, @import -> more declarations; printing back to
-//                loadable text
+//                @problem -> plan::Problem, @migration Name(Target, Source) and @compose ->
+//                migrate::SchemaMap (an ontology map), @import -> more declarations;
+//                printing back to loadable text
 //
 // Rule blocks (Pre/Keep/Eff, or L/K/R) are *partial* presentations, unlike instances: a hom or
 // attribute a block never mentions stays unset, meaning "no constraint" in Pre, "rewritten by
@@ -22,6 +23,7 @@
 #include "catplan/acset/acset.hpp"
 #include "catplan/base/diagnostic.hpp"
 #include "catplan/base/source.hpp"
+#include "catplan/migrate/schema_map.hpp"
 #include "catplan/plan/domain.hpp"
 #include "catplan/rewrite/rule.hpp"
 #include "catplan/schema/schema.hpp"
@@ -33,7 +35,7 @@
 
 namespace catplan::lang {
 
-enum class DeclKind { Schema, Instance, Rule, Domain, Problem };
+enum class DeclKind { Schema, Instance, Rule, Domain, Problem, Map };
 
 struct Declaration {
     DeclKind kind = DeclKind::Schema;
@@ -41,7 +43,8 @@ struct Declaration {
     SourceRange range;
     /// True when the declaration comes from an @import-ed file rather than the loaded one.
     bool imported = false;
-    /// The schema (for an instance, rule, domain or problem: the schema it is on).
+    /// The schema (for an instance, rule, domain or problem: the schema it is on; for a map
+    /// F : D' -> D, its target D', the schema of the states it produces).
     schema::SchemaPtr schema;
     /// Instances only.
     std::shared_ptr<const acset::ACSet> instance;
@@ -52,6 +55,8 @@ struct Declaration {
     /// Problems only; also the names of its initial and goal instances.
     plan::ProblemPtr problem;
     std::string initial_name, goal_name;
+    /// Maps only: the finished, valid ontology map (map->target() is D', map->source() is D).
+    std::shared_ptr<const migrate::SchemaMap> map;
 };
 
 class Module {
@@ -86,8 +91,15 @@ Module load_source(std::string name, std::string text, SourceManager& sources, D
 /// "instance Initial (ColorBlocksworld): 11 parts (Block 7, Empty 1, Gripper 1, On 2), 3
 /// variables" / "rule unstack(block, underblock) on ColorBlocksworld: L 9 parts, K 3, R 5,
 /// deletes 4, creates 1, 1 NAC" / "domain Blocksworld (ColorBlocksworld): 4 rules: unstack,
-/// stack, pickup, putdown" / "problem CaseStudy (Blocksworld): initial Initial, goal Goal".
+/// stack, pickup, putdown" / "problem CaseStudy (Blocksworld): initial Initial, goal Goal" /
+/// "map ColorToKitchen : KitchenWorld -> ColorBlocksworld (conjunctive, 10 objects, 5 by query,
+/// 13 homs, 3 attribute types, 15 attributes)".
 std::string summarize(const Declaration& d);
+
+/// The map in brief, one line per target generator and its image: "  Object => Block",
+/// "  BreadSliced => @join (block::Block; C::Color; C == \"purple\")",
+/// "  breadSlicedIsObject => (Object => block)", "  Temperature => Float".
+std::string describe_map(const migrate::SchemaMap& m);
 
 /// The one-line summary of a rule (as for a rule declaration), e.g. for the rules of a domain.
 std::string summarize_rule(const rewrite::Rule& rule);

@@ -110,6 +110,19 @@ std::string summarize(const Declaration& d) {
         return fmt::format("problem {} ({}): initial {}, goal {}", d.name, d.problem->domain->name,
                            d.initial_name, d.goal_name);
     }
+    if (d.kind == DeclKind::Map) {
+        const auto& m = *d.map;
+        const Schema& t = *m.target();
+        std::size_t queries = 0;
+        for (std::uint32_t o = 0; o < t.num_obs(); ++o) {
+            queries += m.query(ObId(o)).is_plain() ? 0 : 1;
+        }
+        return fmt::format("map {} : {} -> {} ({}, {}, {} by query, {}, {}, {})", d.name, t.name(),
+                           m.source()->name(), m.is_delta() ? "delta" : "conjunctive",
+                           plural(t.num_obs(), "object"), queries, plural(t.num_homs(), "hom"),
+                           plural(t.num_attr_types(), "attribute type"),
+                           plural(t.num_attrs(), "attribute"));
+    }
     if (d.kind == DeclKind::Schema) {
         const Schema& s = *d.schema;
         std::string out =

@@ -605,6 +605,36 @@ private:
         return items;
     }
 
+    // A named edge of a query, `(f: x → y)` (DataMigrations' @join syntax), just after its '(':
+    // Binary ":" of the name and the arrow; nullopt (consuming nothing) for anything else.
+    std::optional<Expr> named_edge(SourceRange& range) {
+        ++nest_;
+        const Token& name = peek();
+        std::size_t colon = pos_ + 1;
+        while (tokens_[colon].kind == TokenKind::Newline) {
+            ++colon;
+        }
+        if (name.kind != TokenKind::Ident || tokens_[colon].kind != TokenKind::Punct ||
+            tokens_[colon].text != ":") {
+            --nest_;
+            return std::nullopt;
+        }
+        Expr lhs;
+        lhs.kind = Expr::Kind::Name;
+        lhs.range = name.range;
+        lhs.text = next().text;
+        next(); // ':'
+        Expr arrow = expr();
+        if (!at_punct(")")) {
+            fail_at(peek(), fmt::format("expected ')' after the edge, found {}", describe(peek())));
+        }
+        --nest_;
+        range = range.merge(next().range);
+        Expr e = binary(":", std::move(lhs), std::move(arrow));
+        e.range = range;
+        return e;
+    }
+
     Expr primary() {
         const Token& t = peek();
         Expr e;
@@ -663,6 +693,9 @@ private:
         case TokenKind::Punct:
             if (t.text == "(") {
                 next();
+                if (auto edge = named_edge(e.range)) {
+                    return std::move(*edge);
+                }
                 e.args = list(")", e.range);
                 if (e.args.size() == 1) {
                     // Plain parentheses: keep the inner expression, widen its range.

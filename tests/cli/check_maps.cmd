@@ -1,0 +1,1 @@
+check examples/colorblocks_to_kitchen/appendix_map.cp examples/colorblocks_to_kitchen/slides_map.cp
