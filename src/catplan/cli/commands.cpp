@@ -21,6 +21,14 @@
 #include <ostream>
 
 namespace catplan::cli {
+
+// pddl_commands.cpp: `validate` and `plan` on PDDL files.
+bool is_pddl_input(const std::vector<std::string>& files);
+int pddl_validate(const std::vector<std::string>& files, std::ostream& out, std::ostream& err);
+int pddl_plan(const std::vector<std::string>& files, const plan::SearchOptions& options,
+              const std::string& config, const std::string& output, bool timing, std::ostream& out,
+              std::ostream& err);
+
 namespace {
 
 // ---- check ----------------------------------------------------------------------------------
@@ -259,13 +267,21 @@ int cmd_json_import(const std::vector<std::string>& args, std::string name,
 // ---- validate and plan ----------------------------------------------------------------------
 
 struct ValidateArgs {
-    std::string file, domain, problem, plan_file;
+    std::vector<std::string> files; // FILE, or DOMAIN.pddl PROBLEM.pddl PLAN
+    std::string domain, problem, plan_file;
     bool trace = false;
 };
 
 int cmd_validate(const ValidateArgs& a, std::ostream& out, std::ostream& err) {
+    if (is_pddl_input(a.files)) {
+        return pddl_validate(a.files, out, err);
+    }
+    if (a.files.size() != 1 || a.problem.empty() || a.plan_file.empty()) {
+        error(err, "validate takes FILE --problem P --plan PLAN, or DOMAIN.pddl PROBLEM.pddl PLAN");
+        return kBadInput;
+    }
     Session s;
-    auto problem = load_problem(s, a.file, a.domain, a.problem, err);
+    auto problem = load_problem(s, a.files[0], a.domain, a.problem, err);
     if (problem == nullptr) {
         return kBadInput;
     }
@@ -310,7 +326,8 @@ int cmd_validate(const ValidateArgs& a, std::ostream& out, std::ostream& err) {
 }
 
 struct PlanArgs {
-    std::string file, domain, problem, output;
+    std::vector<std::string> files; // FILE, or DOMAIN.pddl PROBLEM.pddl
+    std::string domain, problem, output;
     std::string search = "bfs", heuristic = "hff";
     std::uint64_t max_nodes = 0;
     double max_time = 0, max_memory_mb = 0;
@@ -328,11 +345,6 @@ std::string format_stats(const plan::SearchStats& st, bool timing) {
 }
 
 int cmd_plan(const PlanArgs& a, std::ostream& out, std::ostream& err) {
-    Session s;
-    auto problem = load_problem(s, a.file, a.domain, a.problem, err);
-    if (problem == nullptr) {
-        return kBadInput;
-    }
     plan::SearchOptions options;
     options.search = *plan::parse_search(a.search);
     options.heuristic = *plan::parse_heuristic(a.heuristic);
@@ -347,10 +359,22 @@ int cmd_plan(const PlanArgs& a, std::ostream& out, std::ostream& err) {
                                static_cast<double>(st.bytes) / 1e6, st.seconds);
         };
     }
-    auto r = plan::find_plan(*problem, options);
     std::string config = options.search == plan::SearchKind::BreadthFirst
                              ? a.search
                              : fmt::format("{}, {}", a.search, a.heuristic);
+    if (is_pddl_input(a.files)) {
+        return pddl_plan(a.files, options, config, a.output, !a.no_timing, out, err);
+    }
+    if (a.files.size() != 1 || a.problem.empty()) {
+        error(err, "plan takes FILE --problem P, or DOMAIN.pddl PROBLEM.pddl");
+        return kBadInput;
+    }
+    Session s;
+    auto problem = load_problem(s, a.files[0], a.domain, a.problem, err);
+    if (problem == nullptr) {
+        return kBadInput;
+    }
+    auto r = plan::find_plan(*problem, options);
     std::string stats = fmt::format("# {}\n", format_stats(r.stats, !a.no_timing));
     if (r.status == plan::SearchStatus::Solved) {
         std::string text = r.plan->to_string();
@@ -444,23 +468,30 @@ int run(int argc, char** argv, std::ostream& out, std::ostream& err) {
 
     auto* validate = app.add_subcommand(
         "validate", "Replay a plan on a problem and check its goal (exit 1 when invalid)");
-    validate->add_option("FILE", validate_args.file, "language file (.cp)")->required();
+    validate
+        ->add_option("FILE", validate_args.files,
+                     "language file (.cp), or DOMAIN.pddl PROBLEM.pddl PLAN (an IPC plan)")
+        ->required()
+        ->expected(-1);
     validate->add_option("--domain", validate_args.domain,
                          "the domain (default: the problem's domain)");
-    validate->add_option("--problem", validate_args.problem, "the problem declared in FILE")
-        ->required();
-    validate->add_option("--plan", validate_args.plan_file, "plan file: one step per line")
-        ->required();
+    validate->add_option("--problem", validate_args.problem,
+                         "the problem declared in FILE (required for a .cp file)");
+    validate->add_option("--plan", validate_args.plan_file,
+                         "plan file: one step per line (required for a .cp file)");
     validate->add_flag("--trace", validate_args.trace, "print every state as tables");
 
     PlanArgs plan_args;
     auto* plan_cmd = app.add_subcommand(
         "plan", "Search for a plan (exit 1 when provably none, 4 when a limit stops the search)");
-    plan_cmd->add_option("FILE", plan_args.file, "language file (.cp)")->required();
+    plan_cmd
+        ->add_option("FILE", plan_args.files, "language file (.cp), or DOMAIN.pddl PROBLEM.pddl")
+        ->required()
+        ->expected(-1);
     plan_cmd->add_option("--domain", plan_args.domain,
                          "the domain (default: the problem's domain)");
-    plan_cmd->add_option("--problem", plan_args.problem, "the problem declared in FILE")
-        ->required();
+    plan_cmd->add_option("--problem", plan_args.problem,
+                         "the problem declared in FILE (required for a .cp file)");
     plan_cmd->add_option("--search", plan_args.search, "bfs (shortest plans), astar or gbfs")
         ->check(CLI::IsMember({"bfs", "astar", "gbfs"}))
         ->capture_default_str();

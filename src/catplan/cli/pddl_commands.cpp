@@ -1,12 +1,268 @@
+// `catplan pddl import|export`, and `plan` / `validate` on PDDL files (commands.cpp dispatches to
+// pddl_plan and pddl_validate when a positional file ends in .pddl).
+
+#include "catplan/cli/commands.hpp"
 #include "catplan/cli/common.hpp"
+#include "catplan/pddl/export.hpp"
+#include "catplan/pddl/import.hpp"
+#include "catplan/pddl/ipc_plan.hpp"
+#include "catplan/plan/search.hpp"
 
 #include <CLI/CLI.hpp>
+#include <fmt/format.h>
+#include <ostream>
 
 namespace catplan::cli {
 
+/// Whether the positional files of `plan` / `validate` are PDDL (one of them ends in .pddl).
+bool is_pddl_input(const std::vector<std::string>& files);
+/// `catplan validate DOMAIN.pddl PROBLEM.pddl PLAN`.
+int pddl_validate(const std::vector<std::string>& files, std::ostream& out, std::ostream& err);
+/// `catplan plan DOMAIN.pddl PROBLEM.pddl`: the plan in IPC form.
+int pddl_plan(const std::vector<std::string>& files, const plan::SearchOptions& options,
+              const std::string& config, const std::string& output, bool timing, std::ostream& out,
+              std::ostream& err);
+
+namespace {
+
+/// Reads and imports a domain and (when `problem_file` is not empty) a problem; nullopt with
+/// every diagnostic printed.
+std::optional<pddl::Import> load_pddl(Session& s, const std::string& domain_file,
+                                      const std::string& problem_file, std::ostream& err) {
+    auto read = [&](const std::string& f) -> std::optional<std::uint32_t> {
+        auto id = s.sources.add_file(f);
+        if (!id) {
+            error(err, fmt::format("cannot read '{}'", f));
+        }
+        return id;
+    };
+    auto df = read(domain_file);
+    if (!df) {
+        return std::nullopt;
+    }
+    auto domain = pddl::parse_domain(*df, s.sources, s.sink);
+    if (report(s, err) || !domain) {
+        return std::nullopt;
+    }
+    std::optional<pddl::Problem> problem;
+    if (!problem_file.empty()) {
+        auto pf = read(problem_file);
+        if (!pf) {
+            return std::nullopt;
+        }
+        problem = pddl::parse_problem(*pf, *domain, s.sources, s.sink);
+        if (report(s, err) || !problem) {
+            return std::nullopt;
+        }
+    }
+    auto im = pddl::import_pddl(*domain, problem ? &*problem : nullptr, s.sink);
+    if (report(s, err) || !im) {
+        return std::nullopt;
+    }
+    return im;
+}
+
+/// The imported domain and problem in catplan's language, the rules as comments.
+std::string import_text(const pddl::Import& im, const std::string& domain_file) {
+    std::string out = fmt::format("# Imported by catplan from {}.\n", domain_file);
+    out +=
+        "# Each PDDL action is one rule per identification of its parameters and per open fact\n"
+        "# (src/catplan/pddl/import.hpp): the rules, with their parameters, are listed below.\n\n";
+    out += lang::print_schema(*im.domain->schema) + "\n";
+    if (im.problem != nullptr) {
+        out += lang::print_instance(*im.problem->initial, "Initial") + "\n";
+        out += lang::print_instance(*im.problem->goal, "Goal") + "\n";
+    }
+    for (const auto& a : im.actions) {
+        out += fmt::format("# action {}: {} rule{}\n", a.action, a.variants.size(),
+                           a.variants.size() == 1 ? "" : "s");
+        for (const auto& v : a.variants) {
+            out += "#   " + lang::summarize_rule(*v.rule) + "\n";
+        }
+    }
+    return out;
+}
+
+int cmd_pddl_import(const std::vector<std::string>& files, const std::string& output,
+                    std::ostream& out, std::ostream& err) {
+    Session s;
+    auto im = load_pddl(s, files[0], files.size() > 1 ? files[1] : "", err);
+    if (!im) {
+        return kBadInput;
+    }
+    return emit(import_text(*im, files[0]), output, out, err);
+}
+
+struct ExportArgs {
+    std::string file, domain, problem, output, problem_output;
+};
+
+int cmd_pddl_export(const ExportArgs& a, std::ostream& out, std::ostream& err) {
+    Session s;
+    plan::DomainPtr domain;
+    plan::ProblemPtr problem;
+    if (!a.problem.empty()) {
+        problem = load_problem(s, a.file, a.domain, a.problem, err);
+        if (problem == nullptr) {
+            return kBadInput;
+        }
+        domain = problem->domain;
+    } else {
+        auto m = load(s, a.file, err);
+        if (!m) {
+            return kBadInput;
+        }
+        if (a.domain.empty()) {
+            error(err, "pddl export needs --domain or --problem");
+            return kBadInput;
+        }
+        const auto* d = find_declaration(*m, a.file, a.domain, lang::DeclKind::Domain, err);
+        if (d == nullptr) {
+            return kBadInput;
+        }
+        domain = d->domain;
+    }
+    auto dtext = pddl::export_domain(*domain);
+    if (!dtext) {
+        error(err, dtext.error());
+        return kUnsupported;
+    }
+    std::string ptext;
+    if (problem != nullptr) {
+        auto p = pddl::export_problem(*problem);
+        if (!p) {
+            error(err, p.error());
+            return kUnsupported;
+        }
+        ptext = *p;
+    }
+    if (!a.problem_output.empty()) {
+        int rc = emit(ptext, a.problem_output, out, err);
+        if (rc != kOk) {
+            return rc;
+        }
+        ptext.clear();
+    }
+    return emit(ptext.empty() ? *dtext : *dtext + "\n" + ptext, a.output, out, err);
+}
+
+/// " (file:line:col)" for a located step, "" otherwise.
+std::string where(const Session& s, SourceRange r) {
+    if (!r.valid()) {
+        return "";
+    }
+    auto lc = s.sources.line_col(r.file, r.begin);
+    return fmt::format(" ({}:{}:{})", s.sources.name(r.file), lc.line, lc.col);
+}
+
+} // namespace
+
+bool is_pddl_input(const std::vector<std::string>& files) {
+    return std::any_of(files.begin(), files.end(), [](const std::string& f) {
+        return f.size() >= 5 && f.compare(f.size() - 5, 5, ".pddl") == 0;
+    });
+}
+
+int pddl_validate(const std::vector<std::string>& files, std::ostream& out, std::ostream& err) {
+    if (files.size() != 3) {
+        error(err, "validate on PDDL takes DOMAIN.pddl PROBLEM.pddl PLAN");
+        return kBadInput;
+    }
+    Session s;
+    auto im = load_pddl(s, files[0], files[1], err);
+    if (!im) {
+        return kBadInput;
+    }
+    auto f = s.sources.add_file(files[2]);
+    if (!f) {
+        error(err, fmt::format("cannot read '{}'", files[2]));
+        return kBadInput;
+    }
+    auto plan = pddl::parse_ipc_plan(*f, s.sources, s.sink);
+    if (report(s, err) || !plan) {
+        return kBadInput;
+    }
+    auto v = pddl::validate_ipc_plan(*im, *plan);
+    for (std::size_t i = 0; i < v.plan.steps.size(); ++i) {
+        out << fmt::format("{}. {}   [rule {}]\n", i + 1, (*plan)[i].to_string(),
+                           v.plan.steps[i].to_string());
+    }
+    if (v.valid) {
+        out << "valid: goal reached\n";
+        return kOk;
+    }
+    std::string at = v.failed_step ? where(s, (*plan)[*v.failed_step].range) : "";
+    out << fmt::format("invalid: {}{}\n", v.reason, at);
+    return kNo;
+}
+
+int pddl_plan(const std::vector<std::string>& files, const plan::SearchOptions& options,
+              const std::string& config, const std::string& output, bool timing, std::ostream& out,
+              std::ostream& err) {
+    if (files.size() != 2) {
+        error(err, "plan on PDDL takes DOMAIN.pddl PROBLEM.pddl");
+        return kBadInput;
+    }
+    Session s;
+    auto im = load_pddl(s, files[0], files[1], err);
+    if (!im) {
+        return kBadInput;
+    }
+    auto r = plan::find_plan(*im->problem, options);
+    const auto& st = r.stats;
+    std::string stats = fmt::format("; expanded {}, generated {}, duplicates {}, states {}",
+                                    st.expanded, st.generated, st.duplicates, st.states);
+    if (timing) {
+        stats +=
+            fmt::format(", {:.1f} MB, {:.3f} s", static_cast<double>(st.bytes) / 1e6, st.seconds);
+    }
+    if (r.status != plan::SearchStatus::Solved) {
+        out << fmt::format("; no plan: {} ({})\n{}\n",
+                           r.status == plan::SearchStatus::Unsolvable
+                               ? "the goal is unreachable"
+                               : std::string(plan::to_string(r.status)) + " reached",
+                           config, stats);
+        return r.status == plan::SearchStatus::Unsolvable ? kNo : kLimit;
+    }
+    auto ipc = pddl::to_ipc_plan(*im, *r.plan);
+    CATPLAN_ASSERT(ipc.has_value(), "the planner uses the imported rules");
+    std::string text = pddl::write_ipc_plan(*ipc);
+    std::string summary = fmt::format("; plan of {} step{} ({})\n{}\n", ipc->size(),
+                                      ipc->size() == 1 ? "" : "s", config, stats);
+    if (output.empty() || output == "-") {
+        out << text << summary;
+        return kOk;
+    }
+    int rc = emit(text, output, out, err);
+    out << summary;
+    return rc;
+}
+
 void add_pddl_commands(CLI::App& app, CommandTable& table) {
-    (void)app;
-    (void)table;
+    auto* pddl_cmd = app.add_subcommand("pddl", "PDDL interop (plan and validate also read PDDL)");
+    pddl_cmd->require_subcommand(1);
+
+    static std::vector<std::string> import_files;
+    static std::string import_output;
+    auto* imp = pddl_cmd->add_subcommand(
+        "import", "Read a PDDL domain (and problem) and print it in catplan's language");
+    imp->add_option("FILES", import_files, "DOMAIN.pddl [PROBLEM.pddl]")
+        ->required()
+        ->expected(1, 2);
+    imp->add_option("-o,--output", import_output, "write to this file instead of stdout");
+    table.add(imp, [](std::ostream& o, std::ostream& e) {
+        return cmd_pddl_import(import_files, import_output, o, e);
+    });
+
+    static ExportArgs ea;
+    auto* exp = pddl_cmd->add_subcommand(
+        "export", "Write a domain (and problem) of a language file as PDDL, where expressible");
+    exp->add_option("FILE", ea.file, "language file (.cp)")->required();
+    exp->add_option("--domain", ea.domain, "the domain (default: the problem's domain)");
+    exp->add_option("--problem", ea.problem, "the problem, exported after the domain");
+    exp->add_option("-o,--output", ea.output, "write the domain (and problem) to this file");
+    exp->add_option("--problem-output", ea.problem_output, "write the problem to this file");
+    table.add(exp, [](std::ostream& o, std::ostream& e) { return cmd_pddl_export(ea, o, e); });
 }
 
 } // namespace catplan::cli

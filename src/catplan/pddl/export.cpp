@@ -550,7 +550,11 @@ Result<std::string> export_problem(const plan::Problem& problem) {
     if (!goals) {
         return fail(goals.error());
     }
-    std::string out = fmt::format("; Exported by catplan from the problem {}.\n", problem.name);
+    // catplan goals are patterns (any parts that fit); PDDL goals name objects, so a goal part is
+    // read as the initial object of the same name (exact for imported goals, which pin names).
+    std::string out = fmt::format("; Exported by catplan from the problem {}; goal parts name the "
+                                  "initial state's objects.\n",
+                                  problem.name);
     out += fmt::format("(define (problem {})\n  (:domain {})\n", pddl_name(problem.name, "p"),
                        pddl_name(problem.domain->name, "d"));
     out += fmt::format("  (:objects {})\n", fmt::join(objects, " "));

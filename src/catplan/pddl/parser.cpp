@@ -278,7 +278,9 @@ public:
         }
         for (std::size_t i = 0; i < a.args.size(); ++i) {
             std::string t = type_of_term(s_, a.args[i]);
-            if (!s_.domain.is_subtype(t, pred->params[i].type)) {
+            // An unknown type was reported where it was declared.
+            if (s_.domain.find_type(t) != nullptr &&
+                !s_.domain.is_subtype(t, pred->params[i].type)) {
                 p_.error(a.args[i].range,
                          fmt::format("type mismatch: argument {} of '{}' must be a {}, and '{}' "
                                      "is a {}",

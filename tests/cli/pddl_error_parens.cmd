@@ -1,0 +1,1 @@
+pddl import tests/pddl/bad-parens.pddl

@@ -1,0 +1,1 @@
+plan tests/pddl/bad-requirement.pddl tests/pddl/blocksworld-p01.pddl

@@ -1,0 +1,1 @@
+pddl import tests/pddl/dup-domain.pddl tests/pddl/dup-p01.pddl

@@ -1,0 +1,88 @@
+# A small catplan domain that PDDL can express: a relation object (At), a hom-only fact (Door)
+# and a Bool attribute (isLit), for `catplan pddl export`.
+@present Lights(FreeSchema) begin
+  (Room, Robot, At, Door)::Ob
+  (door_l, door_r)::Hom(Door, Room)
+  robot_of::Hom(At, Robot)
+  room_of::Hom(At, Room)
+  Lit::AttrType(Bool)
+  isLit::Attr(Room, Lit)
+end
+
+@domain LightsDomain(Lights) begin
+  :move => @migration(Lights, begin
+    Pre => @join begin
+      robot::Robot
+      (from, to)::Room
+      d::Door
+      door_l(d) == from
+      door_r(d) == to
+      a::At
+      robot_of(a) == robot
+      room_of(a) == from
+    end
+    Keep => @join begin
+      robot::Robot
+      (from, to)::Room
+      d::Door
+      door_l(d) == from
+      door_r(d) == to
+    end
+    Eff => @join begin
+      robot::Robot
+      (from, to)::Room
+      d::Door
+      door_l(d) == from
+      door_r(d) == to
+      b::At
+      robot_of(b) == robot
+      room_of(b) == to
+    end
+  end)
+  :switch_on => @migration(Lights, begin
+    Pre => @join begin
+      robot::Robot
+      room::Room
+      a::At
+      robot_of(a) == robot
+      room_of(a) == room
+      isLit(room) == false
+    end
+    Keep => @join begin
+      robot::Robot
+      room::Room
+      a::At
+      robot_of(a) == robot
+      room_of(a) == room
+    end
+    Eff => @join begin
+      robot::Robot
+      room::Room
+      a::At
+      robot_of(a) == robot
+      room_of(a) == room
+      isLit(room) == true
+    end
+  end)
+end
+
+@acset_colim LightsInitial(Lights) begin
+  r1::Robot
+  (kitchen, hall)::Room
+  (d1, d2)::Door
+  door_l(d1) == hall; door_r(d1) == kitchen
+  door_l(d2) == kitchen; door_r(d2) == hall
+  a0::At
+  robot_of(a0) == r1; room_of(a0) == hall
+  isLit(kitchen) == false; isLit(hall) == false
+end
+
+@acset_colim LightsGoal(Lights) begin
+  kitchen::Room
+  isLit(kitchen) == true
+end
+
+@problem LightsProblem(LightsDomain) begin
+  initial = LightsInitial
+  goal = LightsGoal
+end
