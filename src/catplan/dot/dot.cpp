@@ -1,6 +1,7 @@
 #include "catplan/dot/dot.hpp"
 
 #include "catplan/base/assert.hpp"
+#include "catplan/migrate/describe.hpp"
 
 #include <algorithm>
 #include <array>
@@ -492,14 +493,18 @@ void check_images(const hom::ACSetMorphism& f, const ACSet& dom, const ACSet& co
 
 constexpr std::string_view kMapStyle = "style=dashed, color=\"#888888\", arrowhead=vee";
 
-} // namespace
-
-std::string schema_to_dot(const Schema& s, const DotOptions& o) {
-    Writer w;
-    header(w, s.name(), s.name(), o, o.left_to_right, false);
+/// Writes a schema's objects, attribute types, homs and attributes, with node ids prefixed by
+/// `prefix` (schema pictures use none; a map picture draws two schemas that may share names).
+void write_schema_body(Writer& w, const Schema& s, std::string_view prefix) {
+    auto id = [&](std::string_view name) {
+        return dot_id(std::string(prefix) + std::string(name));
+    };
     for (std::uint32_t i = 0; i < s.num_obs(); ++i) {
-        w.line(fmt::format("{} [shape=box, style=\"rounded,filled\", fillcolor=\"{}\"];",
-                           dot_id(s.ob(ObId(i)).name), fill(ObId(i))));
+        const std::string& name = s.ob(ObId(i)).name;
+        std::string label =
+            prefix.empty() ? std::string() : fmt::format(", label=\"{}\"", escape_quoted(name));
+        w.line(fmt::format("{} [shape=box, style=\"rounded,filled\", fillcolor=\"{}\"{}];",
+                           id(name), fill(ObId(i)), label));
     }
     for (std::uint32_t i = 0; i < s.num_attr_types(); ++i) {
         const auto& t = s.attr_type(AttrTypeId(i));
@@ -510,20 +515,28 @@ std::string schema_to_dot(const Schema& s, const DotOptions& o) {
         }
         w.line(fmt::format("{} [shape=ellipse, style=\"filled,dashed\", fillcolor=\"#f4f4f4\", "
                            "color=\"#777777\", label=<{}>];",
-                           dot_id(t.name), label));
+                           id(t.name), label));
     }
     for (std::uint32_t i = 0; i < s.num_homs(); ++i) {
         const auto& h = s.hom(HomId(i));
-        w.line(fmt::format("{} -> {} [label=\"{}\"];", dot_id(s.ob(h.dom).name),
-                           dot_id(s.ob(h.codom).name), escape_quoted(h.name)));
+        w.line(fmt::format("{} -> {} [label=\"{}\"];", id(s.ob(h.dom).name), id(s.ob(h.codom).name),
+                           escape_quoted(h.name)));
     }
     for (std::uint32_t i = 0; i < s.num_attrs(); ++i) {
         const auto& a = s.attr(AttrId(i));
         w.line(fmt::format("{} -> {} [label=\"{}\", style=dashed, color=\"#777777\", "
                            "fontcolor=\"#555555\"];",
-                           dot_id(s.ob(a.dom).name), dot_id(s.attr_type(a.codom).name),
+                           id(s.ob(a.dom).name), id(s.attr_type(a.codom).name),
                            escape_quoted(a.name)));
     }
+}
+
+} // namespace
+
+std::string schema_to_dot(const Schema& s, const DotOptions& o) {
+    Writer w;
+    header(w, s.name(), s.name(), o, o.left_to_right, false);
+    write_schema_body(w, s, "");
     if (!s.equations().empty()) {
         // A name no generator has, so the note cannot collide with an object's node.
         std::string id = "equations";
@@ -633,6 +646,226 @@ std::string morphism_to_dot(const hom::ACSetMorphism& f, const ACSet& dom, const
     }
     if (!vars.empty()) {
         w.line(fmt::format("variables [shape=note, fontsize=10, label=\"{}\"];", vars));
+    }
+    w.close();
+    return w.take();
+}
+
+namespace {
+
+// ---- ontology maps ------------------------------------------------------------------------------
+
+/// Names for the elements of a query's shape: the variable that lands on an element, else the
+/// shape's own label (as migrate::describe_query writes them).
+class ShapeNames {
+public:
+    explicit ShapeNames(const migrate::Query& q) : q_(q) {
+        for (std::size_t i = 0; i < q.nodes().size(); ++i) {
+            migrate::QueryElement el = q.locate_node(i);
+            if (!el.is_value) {
+                parts_.emplace_back(std::pair{el.ob.index(), el.part}, q.nodes()[i].name);
+            } else if (el.value.is_var()) {
+                vars_.emplace_back(std::pair{el.type.index(), el.value.var_index()},
+                                   q.nodes()[i].name);
+            }
+        }
+    }
+
+    std::string part(ObId ob, Part p) const {
+        for (const auto& [key, name] : parts_) {
+            if (key == std::pair{ob.index(), p}) {
+                return name;
+            }
+        }
+        return q_.state().part_label(ob, p);
+    }
+
+    std::string value(AttrTypeId t, const Value& v) const {
+        if (v.is_var()) {
+            for (const auto& [key, name] : vars_) {
+                if (key == std::pair{t.index(), v.var_index()}) {
+                    return name;
+                }
+            }
+        }
+        return q_.state().value_label(t, v);
+    }
+
+private:
+    const migrate::Query& q_;
+    std::vector<std::pair<std::pair<std::uint32_t, Part>, std::string>> parts_;
+    std::vector<std::pair<std::pair<std::uint32_t, std::uint32_t>, std::string>> vars_;
+};
+
+/// The facts of a query's shape in words: `hasColor(block) == "purple"`, `on_l(o) == block`.
+std::vector<std::string> query_facts(const migrate::Query& q, const ShapeNames& names) {
+    const Schema& s = *q.source();
+    const ACSet& shape = q.state();
+    std::vector<std::string> facts;
+    for (std::uint32_t i = 0; i < s.num_obs(); ++i) {
+        ObId ob(i);
+        for (Part p = 0; p < shape.num_parts(ob); ++p) {
+            for (HomId h : s.homs_from(ob)) {
+                Part v = shape.subpart(h, p);
+                if (v != kNoPart) {
+                    facts.push_back(fmt::format("{}({}) == {}", s.hom(h).name, names.part(ob, p),
+                                                names.part(s.hom(h).codom, v)));
+                }
+            }
+            for (AttrId a : s.attrs_from(ob)) {
+                const Value& v = shape.subpart(a, p);
+                if (!v.is_unset()) {
+                    facts.push_back(fmt::format("{}({}) == {}", s.attr(a).name, names.part(ob, p),
+                                                names.value(s.attr(a).codom, v)));
+                }
+            }
+        }
+    }
+    return facts;
+}
+
+std::string html_row(std::string_view text, std::string_view port = {}) {
+    std::string attrs = "ALIGN=\"LEFT\"";
+    if (!port.empty()) {
+        attrs += fmt::format(" PORT=\"{}\"", port);
+    }
+    return fmt::format("<TR><TD {}>{}</TD></TR>", attrs, escape_html(text));
+}
+
+/// Writes the query box of target object `c` (node id `id`) and dotted edges from each of its
+/// variables to the source object or attribute type it ranges over.
+void write_query_box(Writer& w, const migrate::SchemaMap& f, ObId c, const std::string& id) {
+    const migrate::Query& q = f.query(c);
+    const Schema& s = *f.source();
+    const ACSet& shape = q.state();
+    ShapeNames names(q);
+    std::string html = fmt::format("<TABLE BORDER=\"1\" CELLBORDER=\"0\" CELLSPACING=\"0\" "
+                                   "CELLPADDING=\"3\" STYLE=\"rounded\" BGCOLOR=\"#fffbe6\">"
+                                   "<TR><TD><B>{}</B> <FONT COLOR=\"#666666\">query</FONT></TD>"
+                                   "</TR><HR/>",
+                                   escape_html(f.target()->ob(c).name));
+    std::vector<std::string> edges;
+    std::size_t row = 0;
+    for (std::uint32_t i = 0; i < s.num_obs(); ++i) {
+        for (Part p = 0; p < shape.num_parts(ObId(i)); ++p) {
+            std::string port = fmt::format("v{}", ++row);
+            html +=
+                html_row(fmt::format("{}::{}", names.part(ObId(i), p), s.ob(ObId(i)).name), port);
+            edges.push_back(fmt::format("{}:{}:e -> {} [style=dotted, color=\"#b08000\", "
+                                        "arrowhead=vee];",
+                                        dot_id(id), port, dot_id("S_" + s.ob(ObId(i)).name)));
+        }
+    }
+    for (std::uint32_t t = 0; t < s.num_attr_types(); ++t) {
+        AttrTypeId type(t);
+        for (std::uint32_t j = 0; j < shape.num_vars(type); ++j) {
+            std::string port = fmt::format("v{}", ++row);
+            html += html_row(
+                fmt::format("{}::{}", names.value(type, Value::var(j)), s.attr_type(type).name),
+                port);
+            edges.push_back(fmt::format("{}:{}:e -> {} [style=dotted, color=\"#b08000\", "
+                                        "arrowhead=vee];",
+                                        dot_id(id), port, dot_id("S_" + s.attr_type(type).name)));
+        }
+    }
+    if (q.is_empty()) {
+        html += html_row("@empty (no elements)");
+    } else if (row == 0) {
+        html += html_row("@unit (one element)");
+    }
+    auto facts = query_facts(q, names);
+    for (std::size_t i = 0; i < facts.size(); ++i) {
+        html += (i == 0 ? "<HR/>" : "") + html_row(facts[i]);
+    }
+    html += "</TABLE>";
+    w.line(fmt::format("{} [shape=plain, label=<{}>];", dot_id(id), html));
+    for (const auto& e : edges) {
+        w.line(e);
+    }
+}
+
+/// The table of hom and attribute images, one row per target generator; "" when there are none.
+std::string images_table(const migrate::SchemaMap& f) {
+    std::string rows;
+    std::string_view section;
+    for (const auto& line : migrate::describe_map(f)) {
+        using schema::GeneratorKind;
+        std::string_view kind = line.target.kind == GeneratorKind::Hom    ? "homs"
+                                : line.target.kind == GeneratorKind::Attr ? "attributes"
+                                                                          : "";
+        if (kind.empty()) {
+            continue; // objects and attribute types are drawn as edges
+        }
+        if (kind != section) {
+            section = kind;
+            rows += fmt::format("<TR><TD COLSPAN=\"2\" ALIGN=\"LEFT\"><B>{}</B></TD></TR>", kind);
+        }
+        rows += fmt::format("<TR><TD ALIGN=\"LEFT\">{}</TD><TD ALIGN=\"LEFT\">⇒ {}</TD></TR>",
+                            escape_html(line.name), escape_html(line.image));
+    }
+    if (rows.empty()) {
+        return {};
+    }
+    return "<TABLE BORDER=\"1\" CELLBORDER=\"0\" CELLSPACING=\"0\" CELLPADDING=\"2\" "
+           "COLOR=\"#999999\">" +
+           rows + "</TABLE>";
+}
+
+void write_schema_cluster(Writer& w, const Schema& s, std::string_view id, std::string_view role,
+                          std::string_view prefix) {
+    w.open(fmt::format("subgraph {} {{", dot_id("cluster_" + std::string(id))));
+    w.line(fmt::format("graph [label=<<B>{}</B> <FONT COLOR=\"#666666\">({})</FONT>>, "
+                       "style=\"rounded,bold\", color=\"#555555\", fontsize=13];",
+                       escape_html(s.name()), role));
+    write_schema_body(w, s, prefix);
+    w.close();
+}
+
+} // namespace
+
+std::string map_to_dot(const migrate::SchemaMap& f, std::string_view name, const DotOptions& o) {
+    CATPLAN_ASSERT(f.ok(), "map_to_dot needs a finished map without errors");
+    const Schema& t = *f.target();
+    const Schema& s = *f.source();
+    Writer w;
+    header(w, name,
+           fmt::format("{}: {} → {}{}", name, t.name(), s.name(),
+                       f.is_delta() ? " (delta)" : " (conjunctive)"),
+           o, /*left_to_right=*/true, /*newrank=*/true);
+    write_schema_cluster(w, t, "target", "target", "T_");
+    write_schema_cluster(w, s, "source", "source", "S_");
+    w.line(fmt::format("edge [{}];", kMapStyle));
+    for (std::uint32_t i = 0; i < t.num_obs(); ++i) {
+        ObId c(i);
+        std::string from = dot_id("T_" + t.ob(c).name);
+        if (f.query(c).is_plain()) {
+            w.line(fmt::format("{} -> {};", from, dot_id("S_" + s.ob(f.plain_ob(c)).name)));
+            continue;
+        }
+        std::string box = "Q_" + t.ob(c).name;
+        write_query_box(w, f, c, box);
+        w.line(fmt::format("{} -> {};", from, dot_id(box)));
+    }
+    std::vector<std::string> kinds; // value kinds drawn so far
+    for (std::uint32_t i = 0; i < t.num_attr_types(); ++i) {
+        AttrTypeId a(i);
+        std::string from = dot_id("T_" + t.attr_type(a).name);
+        if (auto image = f.attr_type_image(a)) {
+            w.line(fmt::format("{} -> {};", from, dot_id("S_" + s.attr_type(*image).name)));
+            continue;
+        }
+        std::string kind(schema::to_string(f.attr_type_kind(a)));
+        if (std::find(kinds.begin(), kinds.end(), kind) == kinds.end()) {
+            kinds.push_back(kind);
+            w.line(fmt::format("{} [shape=ellipse, style=dotted, label=<{}<BR/><FONT "
+                               "POINT-SIZE=\"9\" COLOR=\"#555555\">value kind</FONT>>];",
+                               dot_id("K_" + kind), escape_html(kind)));
+        }
+        w.line(fmt::format("{} -> {};", from, dot_id("K_" + kind)));
+    }
+    std::string table = images_table(f);
+    if (!table.empty()) {
+        w.line(fmt::format("images [shape=plain, fontsize=10, label=<{}>];", table));
     }
     w.close();
     return w.take();

@@ -9,6 +9,13 @@
 //   rule       Pre ← Keep → Eff side by side, each drawn like a state, with l and r as dashed
 //              gray edges from each Keep part to its images
 //   morphism   domain and codomain side by side, a dashed edge from each part to its image
+//   map        an ontology map F : D' -> D: the target schema D' (left) and the source schema D
+//              (right) as clusters drawn like schema pictures; a dashed edge from each target
+//              object to its image, a source object or a query box listing the query's variables
+//              (`block::Block`) and facts (`hasColor(block) == "purple"`), with dotted edges
+//              from each variable to the source object or attribute type it ranges over; dashed
+//              edges from each target attribute type to its source type or value kind; the
+//              images of homs and attributes listed in a table under the picture
 //
 // Two readability heuristics for blocks-like domains, both on by default (DotOptions):
 //   relation edges   an object with exactly two homs, no attributes and no homs into it (a binary
@@ -29,6 +36,7 @@
 
 #include "catplan/acset/acset.hpp"
 #include "catplan/hom/morphism.hpp"
+#include "catplan/migrate/schema_map.hpp"
 #include "catplan/rewrite/rule.hpp"
 #include "catplan/schema/schema.hpp"
 
@@ -68,6 +76,12 @@ std::string rule_to_dot(const rewrite::Rule& r, const DotOptions& options = {});
 std::string morphism_to_dot(const hom::ACSetMorphism& f, const acset::ACSet& dom,
                             const acset::ACSet& codom, std::string_view name,
                             const DotOptions& options = {});
+
+/// A DOT digraph of a finished ontology map F : D' -> D, titled `name`: both schemas side by
+/// side, the images of objects and attribute types as dashed edges (through query boxes for
+/// conjunctive images), and the images of homs and attributes as a table.
+std::string map_to_dot(const migrate::SchemaMap& f, std::string_view name,
+                       const DotOptions& options = {});
 
 /// `s` as a DOT ID: bare when it is a plain identifier (letters, digits, '_', not starting with
 /// a digit, not a keyword), otherwise a quoted string with '"' and '\' escaped.

@@ -3,6 +3,7 @@
 // tests/dot) checks that every golden file renders with Graphviz.
 
 #include "catplan/dot/dot.hpp"
+#include "catplan/migrate/query.hpp"
 
 #include <gtest/gtest.h>
 
@@ -360,6 +361,78 @@ TEST(DotGolden, Escaping) {
     expect_golden("escaping_schema", schema_to_dot(*s));
 }
 
+// The paper's map in small: Kitchen objects are blocks, InReceptacle is On, BreadSliced is the
+// purple blocks (a query), Temperature a value kind with a constant attribute, and a query with
+// a value variable and a path (the blocks on something, with their colour).
+migrate::SchemaMap kitchen_map(const Blocks& b) {
+    auto k = std::make_shared<Schema>("Kitchen");
+    ObId object = k->add_ob("Object");
+    ObId in = k->add_ob("InReceptacle");
+    ObId bread = k->add_ob("BreadSliced");
+    ObId stacked = k->add_ob("Stacked");
+    ObId gripper = k->add_ob("Gripper");
+    AttrTypeId temperature = k->add_attr_type("Temperature", ValueKind::Float);
+    AttrTypeId shade = k->add_attr_type("Shade", ValueKind::String);
+    HomId in_l = k->add_hom("inReceptacle_l", in, object);
+    HomId in_r = k->add_hom("inReceptacle_r", in, object);
+    HomId bread_is_object = k->add_hom("breadIsObject", bread, object);
+    HomId holding = k->add_hom("isHolding", gripper, object);
+    AttrId bread_temperature = k->add_attr("breadTemperature", bread, temperature);
+    AttrId stacked_shade = k->add_attr("stackedShade", stacked, shade);
+    migrate::SchemaMap f(k, b.s);
+    f.map_ob(object, b.block);
+    f.map_ob(in, b.on);
+    f.map_ob(gripper, b.gripper);
+    migrate::Query purple(b.s);
+    purple.add_variable("block", b.block);
+    purple.add_equation(migrate::Term::path("block", {}, b.has_color),
+                        migrate::Term::constant(Value::string("purple")));
+    f.map_ob(bread, std::move(purple));
+    migrate::Query on_something(b.s);
+    on_something.add_variable("o", b.on);
+    on_something.add_value_variable("C", b.color);
+    on_something.add_equation(migrate::Term::path("o", {b.on_l}, b.has_color),
+                              migrate::Term::path("C"));
+    f.map_ob(stacked, std::move(on_something));
+    f.map_hom_path(in_l, {b.on_l});
+    f.map_hom_path(in_r, {b.on_r});
+    f.map_hom_path(holding, {b.is_holding});
+    f.map_hom(bread_is_object, {migrate::Term::path("block")});
+    f.map_attr_type(temperature, ValueKind::Float);
+    f.map_attr_type(shade, b.color);
+    f.map_attr_constant(bread_temperature, Value::real(0.0));
+    f.map_attr(stacked_shade, migrate::Term::path("C"));
+    for (const auto& p : f.finish()) {
+        ADD_FAILURE() << p.message;
+    }
+    return f;
+}
+
+TEST(DotGolden, ConjunctiveMap) {
+    Blocks b;
+    expect_golden("kitchen_map", map_to_dot(kitchen_map(b), "ColorToKitchen"));
+}
+
+TEST(DotGolden, DeltaMap) {
+    Blocks b;
+    auto t = std::make_shared<Schema>("Stacks");
+    ObId thing = t->add_ob("Block"); // the same name as the source object: ids stay apart
+    ObId rel = t->add_ob("Above");
+    HomId top = t->add_hom("top", rel, thing);
+    HomId below = t->add_hom("below", rel, thing);
+    AttrTypeId paint = t->add_attr_type("Paint", ValueKind::String);
+    AttrId painted = t->add_attr("painted", thing, paint);
+    migrate::SchemaMap f(t, b.s);
+    f.map_ob(thing, b.block);
+    f.map_ob(rel, b.on);
+    f.map_hom_path(top, {b.on_l});
+    f.map_hom_path(below, {b.on_r});
+    f.map_attr_type(paint, b.color);
+    f.map_attr(painted, migrate::Term::path("Block", {}, b.has_color));
+    ASSERT_TRUE(f.finish().empty());
+    expect_golden("delta_map", map_to_dot(f, "Swap"));
+}
+
 // ---- unit tests -------------------------------------------------------------------------------
 
 TEST(DotId, BareOnlyForPlainIdentifiers) {
@@ -497,6 +570,24 @@ TEST(DotMorphism, RelationPartsOfTheDomainAreNodes) {
     std::string dot = morphism_to_dot(hom::identity(x), x, x, "id");
     EXPECT_TRUE(contains(dot, "dom_On_1 -> codom_On_1 [style=dashed"));
     EXPECT_TRUE(contains(dot, "dom_Block_2 -> codom_Block_2 [style=dashed"));
+}
+
+TEST(DotMap, QueryBoxesAndEdges) {
+    Blocks b;
+    std::string dot = map_to_dot(kitchen_map(b), "F");
+    EXPECT_TRUE(contains(dot, "subgraph cluster_target {"));
+    EXPECT_TRUE(contains(dot, "subgraph cluster_source {"));
+    EXPECT_TRUE(contains(dot, "T_Object -> S_Block;"));
+    EXPECT_TRUE(contains(dot, "T_BreadSliced -> Q_BreadSliced;"));
+    EXPECT_TRUE(contains(dot, "block::Block"));
+    EXPECT_TRUE(contains(dot, "hasColor(block) == &quot;purple&quot;"));
+    EXPECT_TRUE(contains(dot, "Q_BreadSliced:v1:e -> S_Block"));
+    // The value variable C ranges over the source type Color.
+    EXPECT_TRUE(contains(dot, "C::Color"));
+    EXPECT_TRUE(contains(dot, "-> S_Color [style=dotted"));
+    EXPECT_TRUE(contains(dot, "T_Temperature -> K_Float;"));
+    EXPECT_TRUE(contains(dot, "T_Shade -> S_Color;"));
+    EXPECT_TRUE(contains(dot, "breadTemperature"));
 }
 
 } // namespace
