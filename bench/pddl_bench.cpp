@@ -6,9 +6,9 @@
 // Per size, each iteration solves the same kSeeds instances (GBFS with hff, a node and a time
 // limit). Counters, per iteration:
 //   solved, limited   problems solved; problems stopped by a limit
-//   plan_len          mean plan length of the solved problems (each plan is checked with
+//   plan_len          median plan length of the solved problems (each plan is checked with
 //                     validate_ipc_plan)
-//   solve_ms          mean wall time per problem of parse + import + search
+//   solve_ms          median wall time per problem of parse + import + search
 //   expanded          expansions summed over the batch
 
 #include "catplan/pddl/import.hpp"
@@ -18,13 +18,14 @@
 
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <chrono>
 #include <fmt/format.h>
 
 namespace catplan {
 namespace {
 
-constexpr int kSeeds = 3;
+constexpr int kSeeds = 5;
 
 /// tests/pddl/blocksworld-domain.pddl.
 const char* const kDomain = R"pddl(; The 4-operator blocks world (IPC 2000, typed).
@@ -79,6 +80,14 @@ std::string problem_text(int n, std::uint64_t seed) {
                        n, seed, objects, facts, goals);
 }
 
+double median(std::vector<double> v) {
+    if (v.empty()) {
+        return 0;
+    }
+    std::sort(v.begin(), v.end());
+    return v.size() % 2 == 1 ? v[v.size() / 2] : (v[v.size() / 2 - 1] + v[v.size() / 2]) / 2;
+}
+
 void BM_PddlBlocksworld(benchmark::State& state) {
     const int n = static_cast<int>(state.range(0));
     const std::string dtext = kDomain;
@@ -86,7 +95,8 @@ void BM_PddlBlocksworld(benchmark::State& state) {
     for (int s = 0; s < kSeeds; ++s) {
         problems.push_back(problem_text(n, 1000 + static_cast<std::uint64_t>(s)));
     }
-    double solved = 0, limited = 0, len = 0, ms = 0, expanded = 0;
+    double solved = 0, limited = 0, expanded = 0;
+    std::vector<double> ms, len;
     for (auto _ : state) {
         for (const auto& ptext : problems) {
             auto t0 = std::chrono::steady_clock::now();
@@ -99,10 +109,11 @@ void BM_PddlBlocksworld(benchmark::State& state) {
             opt.search = plan::SearchKind::GreedyBestFirst;
             opt.heuristic = plan::HeuristicKind::HFF;
             opt.max_nodes = 200000;
-            opt.max_seconds = 60;
+            opt.max_seconds = 30;
             auto r = plan::find_plan(*im->problem, opt);
-            ms += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0)
-                      .count();
+            ms.push_back(
+                std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0)
+                    .count());
             expanded += static_cast<double>(r.stats.expanded);
             if (r.status != plan::SearchStatus::Solved) {
                 ++limited;
@@ -114,14 +125,14 @@ void BM_PddlBlocksworld(benchmark::State& state) {
                 return;
             }
             ++solved;
-            len += static_cast<double>(ipc->size());
+            len.push_back(static_cast<double>(ipc->size()));
         }
     }
     double it = static_cast<double>(state.iterations());
     state.counters["solved"] = solved / it;
     state.counters["limited"] = limited / it;
-    state.counters["plan_len"] = solved > 0 ? len / solved : 0;
-    state.counters["solve_ms"] = ms / (it * kSeeds);
+    state.counters["plan_len"] = median(len);
+    state.counters["solve_ms"] = median(ms);
     state.counters["expanded"] = expanded / it;
 }
 

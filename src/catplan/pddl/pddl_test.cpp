@@ -271,5 +271,34 @@ TEST(PddlRoundTrip, EqualityAndNegationKeepTheirPlans) {
     expect_round_trip_keeps_plans("dup-domain.pddl", "dup-p01.pddl", 3);
 }
 
+TEST(PddlSemantics, ConstantsArePinnedAndMayBeParameters) {
+    auto l = load_text(R"((define (domain home)
+      (:requirements :strips :typing)
+      (:types room)
+      (:constants home - room)
+      (:predicates (at ?r - room) (rested))
+      (:action go
+        :parameters (?from ?to - room)
+        :precondition (at ?from)
+        :effect (and (not (at ?from)) (at ?to)))
+      (:action rest
+        :parameters ()
+        :precondition (at home)
+        :effect (rested))))",
+                       R"((define (problem p) (:domain home) (:objects hall - room)
+      (:init (at hall)) (:goal (and (rested) (at home)))))");
+    ASSERT_TRUE(l->import) << l->errors();
+    auto v = validate_ipc_plan(*l->import, plan_text("(rest)"));
+    EXPECT_EQ(v.reason, "step 1 (rest): precondition (at home) does not hold");
+    v = validate_ipc_plan(*l->import, plan_text("(go hall home)\n(rest)\n(go home home)"));
+    EXPECT_TRUE(v.valid) << v.reason;
+    auto dom = export_domain(*l->import->domain);
+    auto prob = export_problem(*l->import->problem);
+    ASSERT_TRUE(dom && prob);
+    auto back = load_text(*dom, *prob);
+    ASSERT_TRUE(back->import) << back->errors() << *dom;
+    EXPECT_EQ(applicable_plans(*l->import, 3), applicable_plans(*back->import, 3)) << *dom;
+}
+
 } // namespace
 } // namespace catplan::pddl
