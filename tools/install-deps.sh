@@ -5,7 +5,7 @@ set -eu
 
 PACKAGES="g++ cmake ninja-build make python3 pkg-config clang-format
 libgtest-dev libgmock-dev libbenchmark-dev libcli11-dev nlohmann-json3-dev libfmt-dev
-libsqlite3-dev graphviz"
+libsqlite3-dev graphviz libgraphviz-dev chromium"
 
 missing=""
 for p in $PACKAGES; do

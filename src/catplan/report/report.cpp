@@ -1,0 +1,420 @@
+#include "catplan/report/report.hpp"
+
+#include "catplan/base/assert.hpp"
+#include "catplan/migrate/describe.hpp"
+#include "catplan/report/svg.hpp"
+
+#include <algorithm>
+#include <fmt/format.h>
+#include <set>
+#include <vector>
+
+namespace catplan::report {
+
+std::string escape_html(std::string_view s) {
+    std::string out;
+    out.reserve(s.size());
+    for (char c : s) {
+        switch (c) {
+        case '&':
+            out += "&amp;";
+            break;
+        case '<':
+            out += "&lt;";
+            break;
+        case '>':
+            out += "&gt;";
+            break;
+        case '"':
+            out += "&quot;";
+            break;
+        case '\'':
+            out += "&#39;";
+            break;
+        default:
+            out += c;
+        }
+    }
+    return out;
+}
+
+namespace {
+
+using transfer::TransferResult;
+
+constexpr std::string_view kStyle = R"(
+body { font-family: system-ui, -apple-system, "Segoe UI", Helvetica, Arial, sans-serif;
+       margin: 0 auto; max-width: 1400px; padding: 1em 2em; color: #222; background: #fff; }
+h1 { font-size: 1.6em; margin-bottom: 0.2em; }
+h2 { font-size: 1.25em; border-bottom: 1px solid #ccc; padding-bottom: 0.2em; margin-top: 1.6em; }
+.verdict { font-size: 1.3em; font-weight: bold; padding: 0.5em 0.8em; border-radius: 6px; }
+.valid { background: #e3f4e1; color: #1d5e1a; border: 1px solid #9ccf97; }
+.invalid { background: #fbe3e3; color: #8a1f1f; border: 1px solid #e0a0a0; }
+.muted { color: #666; }
+.bar { background: #eee; border-radius: 4px; height: 14px; width: 320px; display: inline-block;
+       vertical-align: middle; overflow: hidden; }
+.bar > span { display: block; height: 100%; background: #4a8f43; }
+table { border-collapse: collapse; }
+th, td { border: 1px solid #ddd; padding: 0.35em 0.6em; text-align: left; vertical-align: top; }
+th { background: #f4f4f4; }
+table.steps { width: 100%; }
+table.steps td.num { text-align: right; color: #666; width: 2em; }
+code, .step { font-family: ui-monospace, "DejaVu Sans Mono", Menlo, monospace; }
+.step { font-weight: bold; }
+ul.bindings { margin: 0.3em 0 0 0; padding-left: 1.2em; font-family: ui-monospace, monospace;
+              font-size: 0.9em; }
+ul.bindings li.shared { font-weight: bold; }
+.note { color: #8a5a00; font-size: 0.9em; }
+.failed { color: #8a1f1f; font-weight: bold; }
+.pictures { display: flex; flex-wrap: wrap; gap: 1em; align-items: flex-start; }
+.grid { display: grid; grid-template-columns: 1fr 1fr; gap: 0.8em; }
+figure { margin: 0; border: 1px solid #e4e4e4; border-radius: 4px; padding: 0.4em;
+         background: #fff; overflow: auto; }
+figure.wide { max-width: 100%; }
+figcaption { font-size: 0.85em; color: #555; margin-bottom: 0.3em; }
+svg { max-width: 100%; height: auto; }
+details { margin: 0.4em 0; }
+summary { cursor: pointer; color: #1b4f8a; }
+.error { color: #8a1f1f; font-style: italic; }
+footer { margin-top: 2em; font-size: 0.8em; color: #777; }
+)";
+
+/// Pictures made on demand, rendered once per DOT text and inlined with fresh ids each time.
+class Pictures {
+public:
+    /// A <figure> with the picture of `dot` and a caption.
+    std::string figure(const std::string& dot, std::string_view caption,
+                       std::string_view css_class = {}) {
+        std::string body;
+        auto it = std::find_if(cache_.begin(), cache_.end(),
+                               [&](const auto& e) { return e.first == dot; });
+        if (it == cache_.end()) {
+            auto svg = renderer_.render(dot);
+            cache_.emplace_back(dot, svg ? *svg : std::string());
+            if (!svg) {
+                errors_.push_back(svg.error());
+            }
+            it = std::prev(cache_.end());
+        }
+        if (it->second.empty()) {
+            body = "<p class=\"error\">(no picture: Graphviz failed)</p>";
+        } else {
+            body = inline_svg(it->second, fmt::format("p{}", ++count_));
+        }
+        return fmt::format("<figure{}><figcaption>{}</figcaption>{}</figure>\n",
+                           css_class.empty() ? "" : fmt::format(" class=\"{}\"", css_class),
+                           escape_html(caption), body);
+    }
+
+    /// Why pictures are missing, if any are.
+    const std::vector<std::string>& errors() const { return errors_; }
+
+private:
+    SvgRenderer renderer_;
+    std::vector<std::pair<std::string, std::string>> cache_; // DOT text, SVG ("" on failure)
+    std::vector<std::string> errors_;
+    std::size_t count_ = 0;
+};
+
+struct Verdict {
+    bool valid = false;
+    std::string reason;
+    transfer::GoalSatisfaction goal;
+};
+
+Verdict verdict(const ReportInput& in) {
+    const TransferResult& t = *in.transfer;
+    Verdict v;
+    v.goal = in.goal.value_or(t.goal);
+    v.valid = in.valid.value_or(t.valid);
+    v.reason = !in.reason.empty() ? in.reason : t.reason;
+    if (!v.valid && v.reason.empty()) {
+        v.reason = "the intended goal is not satisfied";
+    }
+    return v;
+}
+
+std::string header_section(const ReportInput& in, const Verdict& v) {
+    const TransferResult& t = *in.transfer;
+    const auto& f = *in.map;
+    std::string o;
+    o += fmt::format("<h1>Plan transfer of {} along {}</h1>\n", escape_html(in.problem->name),
+                     escape_html(in.map_name));
+    o += fmt::format("<p class=\"muted\">{} : {} → {} ({} migration); source domain {}, "
+                     "{} source steps</p>\n",
+                     escape_html(in.map_name), escape_html(f.target()->name()),
+                     escape_html(f.source()->name()), transfer::to_string(t.migration),
+                     escape_html(in.problem->domain->name), in.plan->steps.size());
+    o += fmt::format("<p class=\"verdict {}\">{}</p>\n", v.valid ? "valid" : "invalid",
+                     v.valid ? "Valid: every step applies and the goal embeds monically"
+                             : "Invalid: " + escape_html(v.reason));
+    if (!t.source_valid) {
+        o += fmt::format("<p class=\"failed\">The source plan itself is invalid: {}</p>\n",
+                         escape_html(t.source_reason));
+    }
+    if (t.migration == transfer::MigrationKind::Delta) {
+        o += "<p class=\"muted\">A delta migration preserves pushouts: the transferred plan is "
+             "valid by construction (paper, Appendix A); it was checked anyway.</p>\n";
+    }
+    return o;
+}
+
+std::string goal_section(const Verdict& v) {
+    const auto& g = v.goal;
+    std::string o = "<h2>Goal satisfaction</h2>\n";
+    double pct = 100 * g.fraction();
+    o += fmt::format("<p><span class=\"bar\"><span style=\"width: {:.1f}%\"></span></span> "
+                     "<b>{:.0f}%</b> ({} of {} goal statements{})</p>\n",
+                     pct, pct, g.satisfied, g.total,
+                     g.exact ? "" : ", at least: the search was cut short");
+    if (g.unsatisfied.empty()) {
+        o += "<p>Every goal statement holds in the last target state.</p>\n";
+        return o;
+    }
+    o += "<p>Unsatisfied statements:</p>\n<ul>\n";
+    for (const auto& u : g.unsatisfied) {
+        o += fmt::format("<li><code>{}</code></li>\n", escape_html(u));
+    }
+    o += "</ul>\n";
+    return o;
+}
+
+std::string ontology_section(const ReportInput& in, Pictures& pictures) {
+    const auto& f = *in.map;
+    std::string o = "<h2>The ontologies and the map</h2>\n<div class=\"pictures\">\n";
+    o += pictures.figure(dot::schema_to_dot(*f.source(), in.dot),
+                         fmt::format("source ontology {}", f.source()->name()));
+    o += pictures.figure(dot::schema_to_dot(*f.target(), in.dot),
+                         fmt::format("target ontology {}", f.target()->name()));
+    o += "</div>\n";
+    o += pictures.figure(dot::map_to_dot(f, in.map_name, in.dot),
+                         fmt::format("the map {}: dashed edges go from each target object to its "
+                                     "image, through a query box for a conjunctive image",
+                                     in.map_name),
+                         "wide");
+    o += "<details><summary>The map in words (one line per target generator)</summary>\n"
+         "<table><tr><th>target generator</th><th>image</th></tr>\n";
+    for (const auto& line : migrate::describe_map(f)) {
+        o += fmt::format("<tr><td><code>{}</code></td><td><code>{}</code></td></tr>\n",
+                         escape_html(line.name), escape_html(line.image));
+    }
+    o += "</table></details>\n";
+    return o;
+}
+
+/// The part names a binding text "a ↦ E, b ↦ D" binds ({E, D}).
+std::vector<std::string> split_bindings(const std::string& text) {
+    std::vector<std::string> out;
+    std::size_t start = 0;
+    while (start < text.size()) {
+        std::size_t end = text.find(", ", start);
+        if (end == std::string::npos) {
+            end = text.size();
+        }
+        out.push_back(text.substr(start, end - start));
+        start = end + 2;
+    }
+    return out;
+}
+
+std::string bound_part(const std::string& binding) {
+    static constexpr std::string_view kArrow = " ↦ ";
+    std::size_t at = binding.find(kArrow);
+    return at == std::string::npos ? std::string() : binding.substr(at + kArrow.size());
+}
+
+/// A list of bindings; those binding a part in `shared` are bold (the parts both matches bind).
+std::string bindings_list(const std::string& text, const std::set<std::string>& shared) {
+    auto items = split_bindings(text);
+    if (items.empty()) {
+        return "<p class=\"muted\">(binds nothing)</p>";
+    }
+    std::string o = "<ul class=\"bindings\">";
+    for (const auto& b : items) {
+        bool is_shared = shared.count(bound_part(b)) > 0;
+        o += fmt::format("<li{}>{}</li>", is_shared ? " class=\"shared\"" : "", escape_html(b));
+    }
+    return o + "</ul>";
+}
+
+std::set<std::string> bound_parts(const std::string& text) {
+    std::set<std::string> out;
+    for (const auto& b : split_bindings(text)) {
+        if (auto p = bound_part(b); !p.empty()) {
+            out.insert(p);
+        }
+    }
+    return out;
+}
+
+std::string states_details(const ReportInput& in, std::size_t i, Pictures& pictures) {
+    const TransferResult& t = *in.transfer;
+    if (t.source_states.size() <= i + 1 || t.target_states.size() <= i + 1) {
+        return {};
+    }
+    std::string o = fmt::format(
+        "<details><summary>States before and after step {}</summary>\n<div class=\"grid\">\n",
+        i + 1);
+    auto state = [&](const acset::ACSet& x, std::string name, std::string caption) {
+        return pictures.figure(dot::state_to_dot(x, name, in.dot), caption);
+    };
+    o += state(t.source_states[i], fmt::format("X{}", i), fmt::format("source before: X{}", i));
+    o += state(t.target_states[i], fmt::format("Y{}", i), fmt::format("target before: Y{}", i));
+    o += state(t.source_states[i + 1], fmt::format("X{}", i + 1),
+               fmt::format("source after: X{}", i + 1));
+    o += state(t.target_states[i + 1], fmt::format("Y{}", i + 1),
+               fmt::format("target after: Y{}", i + 1));
+    return o + "</div></details>\n";
+}
+
+std::string step_row(const ReportInput& in, std::size_t i, Pictures& pictures) {
+    const auto& st = in.transfer->steps[i];
+    auto source_parts = bound_parts(st.source_bindings);
+    auto target_parts = bound_parts(st.target_bindings);
+    std::set<std::string> shared;
+    std::set_intersection(source_parts.begin(), source_parts.end(), target_parts.begin(),
+                          target_parts.end(), std::inserter(shared, shared.end()));
+    std::string o = fmt::format("<tr><td class=\"num\">{}</td>", i + 1);
+    o += fmt::format("<td><span class=\"step\">{}</span>{}</td>",
+                     escape_html(st.source.to_string()), bindings_list(st.source_bindings, shared));
+    o += fmt::format("<td><span class=\"step\">{}</span>{}", escape_html(st.target.to_string()),
+                     bindings_list(st.target_bindings, shared));
+    if (!st.lost_parameters.empty()) {
+        std::string lost;
+        for (const auto& p : st.lost_parameters) {
+            lost += (lost.empty() ? "" : ", ") + p;
+        }
+        o += fmt::format("<p class=\"note\">The map does not see parameter(s) {} of {}.</p>",
+                         escape_html(lost), escape_html(st.source.action));
+    }
+    o += "</td></tr>\n";
+    std::string states = states_details(in, i, pictures);
+    if (!states.empty()) {
+        o += fmt::format("<tr><td></td><td colspan=\"2\">{}</td></tr>\n", states);
+    }
+    return o;
+}
+
+std::string steps_section(const ReportInput& in, Pictures& pictures) {
+    const TransferResult& t = *in.transfer;
+    const auto& f = *in.map;
+    std::string o = "<h2>The plans, step by step</h2>\n";
+    o += "<p>Each target step applies the migrated action Δ<sub>F</sub>(a) of its source step. "
+         "Its match is the source match carried through part names: every part of the migrated "
+         "precondition is named after the source part its tuple starts at, so the target match "
+         "binds the target parts named like the source parts that the source match binds. "
+         "Bold bindings are the parts both matches bind; open a step to see the states before "
+         "and after it on both sides.</p>\n";
+    o += fmt::format("<table class=\"steps\"><tr><th>#</th><th>source step ({})</th>"
+                     "<th>target step ({})</th></tr>\n",
+                     escape_html(f.source()->name()), escape_html(f.target()->name()));
+    for (std::size_t i = 0; i < t.steps.size(); ++i) {
+        o += step_row(in, i, pictures);
+    }
+    if (t.failed_step) {
+        std::size_t i = t.failed_step->index;
+        std::string source =
+            i < in.plan->steps.size() ? in.plan->steps[i].to_string() : std::string("?");
+        o += fmt::format("<tr><td class=\"num\">{}</td><td><span class=\"step\">{}</span></td>"
+                         "<td class=\"failed\">not transferred: {}</td></tr>\n",
+                         i + 1, escape_html(source), escape_html(t.failed_step->reason));
+        for (std::size_t j = i + 1; j < in.plan->steps.size(); ++j) {
+            o += fmt::format("<tr><td class=\"num\">{}</td><td><span class=\"step\">{}</span>"
+                             "</td><td class=\"muted\">(not reached)</td></tr>\n",
+                             j + 1, escape_html(in.plan->steps[j].to_string()));
+        }
+    }
+    o += "</table>\n";
+    return o;
+}
+
+std::string problem_section(const ReportInput& in, Pictures& pictures) {
+    const TransferResult& t = *in.transfer;
+    std::string o = "<h2>The problem on both sides</h2>\n<details><summary>Initial states and "
+                    "goals (source I and G, target Y0 = Δ<sub>F</sub>(I) and "
+                    "Δ<sub>F</sub>(G))</summary>\n<div class=\"grid\">\n";
+    o += pictures.figure(dot::state_to_dot(*in.problem->initial, "I", in.dot),
+                         "source initial state I");
+    o += t.target_initial ? pictures.figure(dot::state_to_dot(*t.target_initial, "Y0", in.dot),
+                                            "target initial state Y0")
+                          : "<p class=\"muted\">(no target initial state)</p>";
+    o += pictures.figure(dot::state_to_dot(*in.problem->goal, "G", in.dot), "source goal G");
+    o += t.target_goal ? pictures.figure(dot::state_to_dot(*t.target_goal, "goal", in.dot),
+                                         "target goal Δ_F(G)")
+                       : "<p class=\"muted\">(no target goal)</p>";
+    return o + "</div></details>\n";
+}
+
+std::string efficiency_section(const ReportInput& in) {
+    if (in.replan == nullptr) {
+        return {};
+    }
+    const TransferResult& t = *in.transfer;
+    const transfer::Replan& rp = *in.replan;
+    std::string o = "<h2>Efficiency: transfer against replanning</h2>\n<table>\n";
+    auto row = [&](std::string_view name, const std::string& value) {
+        o += fmt::format("<tr><th>{}</th><td>{}</td></tr>\n", name, escape_html(value));
+    };
+    row("source plan length", std::to_string(in.plan->steps.size()));
+    row("transferred plan length", std::to_string(t.steps.size()));
+    row("replanning", std::string(plan::to_string(rp.search.status)));
+    if (rp.search.plan) {
+        row("replanned plan length", std::to_string(rp.steps.size()));
+        row("edit distance (transferred vs replanned)", std::to_string(rp.edit_distance));
+    }
+    row("states expanded by replanning", std::to_string(rp.search.stats.expanded));
+    if (!in.no_timing) {
+        const auto& tm = t.timings;
+        row("transfer time",
+            fmt::format("{:.3f} ms (replay {:.3f}, migrate {:.3f}, apply {:.3f}, validate {:.3f})",
+                        tm.total_ms, tm.replay_ms, tm.migrate_ms, tm.apply_ms, tm.validate_ms));
+        row("replanning time", fmt::format("{:.3f} ms", rp.ms));
+        row("replanning / transfer", fmt::format("{:.0f}x", rp.ms / std::max(tm.total_ms, 1e-6)));
+        row("peak memory after transfer",
+            fmt::format("{:.1f} MB", static_cast<double>(in.transfer_peak_kib) / 1024.0));
+        row("peak memory after replanning",
+            fmt::format("{:.1f} MB", static_cast<double>(rp.peak_rss_kib) / 1024.0));
+    }
+    o += "</table>\n";
+    if (!rp.steps.empty()) {
+        o += "<details><summary>The replanned plan</summary><ol>\n";
+        for (const auto& s : rp.steps) {
+            o += fmt::format("<li><code>{}</code></li>\n", escape_html(s.to_string()));
+        }
+        o += "</ol></details>\n";
+    }
+    return o;
+}
+
+} // namespace
+
+std::string html_report(const ReportInput& in) {
+    CATPLAN_ASSERT(in.map != nullptr && in.problem != nullptr && in.plan != nullptr &&
+                       in.transfer != nullptr,
+                   "html_report needs a map, a problem, a plan and a transfer");
+    Pictures pictures;
+    Verdict v = verdict(in);
+    std::string body;
+    body += header_section(in, v);
+    body += goal_section(v);
+    body += ontology_section(in, pictures);
+    body += problem_section(in, pictures);
+    body += steps_section(in, pictures);
+    body += efficiency_section(in);
+    if (!pictures.errors().empty()) {
+        body += "<h2>Missing pictures</h2>\n<ul>\n";
+        for (const auto& e : pictures.errors()) {
+            body += fmt::format("<li class=\"error\">{}</li>\n", escape_html(e));
+        }
+        body += "</ul>\n";
+    }
+    body += fmt::format("<footer>Written by catplan; pictures laid out by {}.</footer>\n",
+                        escape_html(SvgRenderer::backend()));
+    return fmt::format("<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
+                       "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
+                       "<title>catplan: {} along {}</title>\n<style>{}</style>\n</head>\n<body>\n"
+                       "{}</body>\n</html>\n",
+                       escape_html(in.problem->name), escape_html(in.map_name), kStyle, body);
+}
+
+} // namespace catplan::report

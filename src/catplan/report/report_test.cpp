@@ -1,0 +1,368 @@
+// The HTML report of a small transfer: verdict, steps, inlined pictures, no network references,
+// escaped text and balanced tags.
+
+#include "catplan/report/report.hpp"
+#include "catplan/report/svg.hpp"
+
+#include <gtest/gtest.h>
+
+#include <set>
+
+namespace catplan::report {
+namespace {
+
+using acset::ACSet;
+using acset::Value;
+using migrate::Query;
+using migrate::SchemaMap;
+using migrate::Term;
+using schema::Schema;
+using schema::SchemaPtr;
+using schema::ValueKind;
+
+// Blocks stacked by On facts, each with a colour; move(b, from, to) moves b from `from` onto
+// `to` (as in transfer_test.cpp).
+struct Stacks {
+    SchemaPtr s;
+    ObId block, on;
+    HomId on_l, on_r;
+    AttrTypeId color_type;
+    AttrId color;
+};
+
+Stacks stacks() {
+    auto s = std::make_shared<Schema>("Stacks");
+    Stacks t;
+    t.block = s->add_ob("Block");
+    t.on = s->add_ob("On");
+    t.on_l = s->add_hom("on_l", t.on, t.block);
+    t.on_r = s->add_hom("on_r", t.on, t.block);
+    t.color_type = s->add_attr_type("Color", ValueKind::String);
+    t.color = s->add_attr("hasColor", t.block, t.color_type);
+    t.s = s;
+    return t;
+}
+
+rewrite::RulePtr move_rule(const Stacks& t) {
+    auto rule = std::make_shared<rewrite::Rule>(t.s);
+    rule->name = "move";
+    for (ACSet* x : {&rule->L, &rule->K, &rule->R}) {
+        for (const char* n : {"b", "from", "to"}) {
+            x->add_part(t.block, n);
+        }
+    }
+    Part o = rule->L.add_part(t.on, "o");
+    rule->L.set_subpart(t.on_l, o, 0);
+    rule->L.set_subpart(t.on_r, o, 1);
+    Part o2 = rule->R.add_part(t.on, "o2");
+    rule->R.set_subpart(t.on_l, o2, 0);
+    rule->R.set_subpart(t.on_r, o2, 2);
+    rule->l = hom::identity(rule->K);
+    rule->r = hom::identity(rule->K);
+    rule->parameters = {{"b", t.block, 0}, {"from", t.block, 1}, {"to", t.block, 2}};
+    return rule;
+}
+
+// A on B on D, C alone; the goal: a purple block on a purple block.
+struct Fixture {
+    Stacks t = stacks();
+    plan::ProblemPtr problem;
+    plan::Plan plan;
+
+    Fixture() {
+        auto domain = std::make_shared<plan::Domain>();
+        domain->name = "Moves";
+        domain->schema = t.s;
+        domain->rules = {move_rule(t)};
+        auto p = std::make_shared<plan::Problem>();
+        p->name = "P";
+        p->domain = domain;
+        ACSet x(t.s);
+        const char* names[] = {"A", "B", "C", "D"};
+        const char* colors[] = {"purple", "red", "purple", "green"};
+        for (int i = 0; i < 4; ++i) {
+            x.set_subpart(t.color, x.add_part(t.block, names[i]), Value::string(colors[i]));
+        }
+        for (auto [top, below] : {std::pair<Part, Part>{0, 1}, {1, 3}}) {
+            Part o = x.add_part(t.on);
+            x.set_subpart(t.on_l, o, top);
+            x.set_subpart(t.on_r, o, below);
+        }
+        p->initial = std::make_shared<ACSet>(std::move(x));
+        ACSet goal(t.s);
+        Part a = goal.add_part(t.block, "a");
+        Part c = goal.add_part(t.block, "c");
+        goal.set_subpart(t.color, a, Value::string("purple"));
+        goal.set_subpart(t.color, c, Value::string("purple"));
+        Part o = goal.add_part(t.on, "o");
+        goal.set_subpart(t.on_l, o, a);
+        goal.set_subpart(t.on_r, o, c);
+        p->goal = std::make_shared<ACSet>(std::move(goal));
+        problem = p;
+        plan.steps = {{"move", {"A", "B", "C"}, {}}, {"move", {"B", "D", "A"}, {}}};
+    }
+};
+
+// Items in receptacles, the purple blocks also BreadSliced (a conjunctive map).
+SchemaMap kitchen_map(const Stacks& t) {
+    auto s = std::make_shared<Schema>("Kitchen");
+    ObId item = s->add_ob("Item");
+    ObId bread = s->add_ob("BreadSliced");
+    ObId in = s->add_ob("InReceptacle");
+    HomId in_l = s->add_hom("in_l", in, item);
+    HomId in_r = s->add_hom("in_r", in, item);
+    HomId bread_is_item = s->add_hom("breadIsItem", bread, item);
+    SchemaMap f(s, t.s);
+    f.map_ob(item, t.block);
+    f.map_ob(in, t.on);
+    f.map_hom_path(in_l, {t.on_l});
+    f.map_hom_path(in_r, {t.on_r});
+    Query q(t.s);
+    q.add_variable("block", t.block);
+    q.add_equation(Term::path("block", {}, t.color), Term::constant(Value::string("purple")));
+    f.map_ob(bread, std::move(q));
+    f.map_hom(bread_is_item, {Term::path("block")});
+    EXPECT_TRUE(f.finish().empty());
+    return f;
+}
+
+bool contains(const std::string& text, std::string_view part) {
+    return text.find(part) != std::string::npos;
+}
+
+std::size_t count(const std::string& text, std::string_view part) {
+    std::size_t n = 0;
+    for (std::size_t at = text.find(part); at != std::string::npos;
+         at = text.find(part, at + part.size())) {
+        ++n;
+    }
+    return n;
+}
+
+// Checks that every element is closed in order (HTML void elements and XML `/>` aside); returns
+// the first problem, or "" when the tags balance. Attribute values hold no '>' (it is escaped).
+std::string unbalanced_tags(const std::string& html) {
+    static const std::set<std::string> kVoid = {"meta", "br", "hr", "img", "input", "link"};
+    std::vector<std::string> open;
+    for (std::size_t at = html.find('<'); at != std::string::npos; at = html.find('<', at + 1)) {
+        if (html.compare(at, 4, "<!--") == 0) {
+            at = html.find("-->", at);
+            if (at == std::string::npos) {
+                return "an unclosed comment";
+            }
+            continue;
+        }
+        std::size_t end = html.find('>', at);
+        if (end == std::string::npos) {
+            return "an unclosed tag";
+        }
+        std::string tag = html.substr(at + 1, end - at - 1);
+        bool closing = !tag.empty() && tag[0] == '/';
+        std::size_t from = closing ? 1 : 0;
+        std::size_t stop = tag.find_first_of(" \t\n/", from);
+        std::string name =
+            tag.substr(from, stop == std::string::npos ? std::string::npos : stop - from);
+        if (name.empty() || name[0] == '!' || name[0] == '?' || tag.back() == '/' ||
+            kVoid.count(name) > 0) {
+            continue; // a DOCTYPE, a self-closed or a void element
+        }
+        if (!closing) {
+            open.push_back(name);
+        } else if (open.empty() || open.back() != name) {
+            return "</" + name + "> closes <" + (open.empty() ? "nothing" : open.back()) + ">";
+        } else {
+            open.pop_back();
+        }
+    }
+    return open.empty() ? "" : "<" + open.back() + "> is never closed";
+}
+
+// Every http(s) URL of the page, but for the SVG and XLink namespace declarations.
+std::vector<std::string> network_references(const std::string& html) {
+    std::vector<std::string> out;
+    for (std::size_t at = html.find("http"); at != std::string::npos;
+         at = html.find("http", at + 4)) {
+        if (html.compare(at, 7, "http://") != 0 && html.compare(at, 8, "https://") != 0) {
+            continue;
+        }
+        std::size_t end = html.find_first_of("\"' <>)", at);
+        std::string u = html.substr(at, end - at);
+        if (u != "http://www.w3.org/2000/svg" && u != "http://www.w3.org/1999/xlink") {
+            out.push_back(u);
+        }
+    }
+    return out;
+}
+
+// Every value of an id="..." attribute.
+std::vector<std::string> ids(const std::string& html) {
+    std::vector<std::string> out;
+    for (std::size_t at = html.find(" id=\""); at != std::string::npos;
+         at = html.find(" id=\"", at + 1)) {
+        std::size_t start = at + 5;
+        out.push_back(html.substr(start, html.find('"', start) - start));
+    }
+    return out;
+}
+
+struct Made {
+    Fixture fx;
+    SchemaMap map = kitchen_map(fx.t);
+    transfer::TransferResult t;
+    std::optional<transfer::Replan> rp;
+    std::string html;
+
+    explicit Made(bool with_replan = false, std::string map_name = "ToKitchen") {
+        transfer::TransferOptions o;
+        o.keep_states = true;
+        t = transfer::transfer_plan(map, *fx.problem, fx.plan, o);
+        ReportInput in;
+        in.map = &map;
+        in.map_name = std::move(map_name);
+        in.problem = fx.problem.get();
+        in.plan = &fx.plan;
+        in.transfer = &t;
+        if (with_replan) {
+            rp = transfer::replan(t, plan::SearchOptions{});
+            in.replan = &*rp;
+        }
+        html = html_report(in);
+    }
+};
+
+TEST(Report, ShowsTheVerdictStepsAndPictures) {
+    Made m;
+    ASSERT_TRUE(m.t.valid) << m.t.reason;
+    const std::string& h = m.html;
+    EXPECT_TRUE(contains(h, "<p class=\"verdict valid\">Valid")) << h.substr(0, 2000);
+    EXPECT_TRUE(contains(h, "100%"));
+    EXPECT_TRUE(contains(h, "conjunctive migration"));
+    for (const auto& st : m.t.steps) {
+        EXPECT_TRUE(contains(h, escape_html(st.source.to_string()))) << st.source.to_string();
+        EXPECT_TRUE(contains(h, escape_html(st.target.to_string()))) << st.target.to_string();
+    }
+    // Schemas (2), map (1), problem (4) and four states per step, all inlined.
+    EXPECT_EQ(count(h, "<svg"), 7 + 4 * m.t.steps.size());
+    EXPECT_FALSE(contains(h, "<?xml"));
+    EXPECT_FALSE(contains(h, "<!DOCTYPE svg"));
+    EXPECT_TRUE(contains(h, "Q_BreadSliced"));                  // the map's query box
+    EXPECT_TRUE(contains(h, "States before and after step 2")); // a <details> per step
+    EXPECT_EQ(count(h, "<details"), count(h, "</details>"));
+    EXPECT_EQ(unbalanced_tags(h), "");
+    EXPECT_EQ(network_references(h), std::vector<std::string>{});
+    EXPECT_FALSE(contains(h, "<script"));
+    EXPECT_FALSE(contains(h, "Efficiency")); // no replanning
+    EXPECT_FALSE(contains(h, "Missing pictures"));
+}
+
+TEST(Report, SvgIdsAreUniqueOnThePage) {
+    Made m;
+    std::set<std::string> seen;
+    for (const auto& id : ids(m.html)) {
+        EXPECT_TRUE(seen.insert(id).second) << "duplicate id " << id;
+    }
+    EXPECT_FALSE(seen.empty());
+}
+
+TEST(Report, InvalidTransferShowsWhyAndTheUnsatisfiedStatements) {
+    Fixture fx;
+    SchemaMap map = kitchen_map(fx.t);
+    plan::Plan one;
+    one.steps = {{"move", {"B", "D", "A"}, {}}}; // B (red) onto A: no purple on purple
+    transfer::TransferOptions o;
+    o.keep_states = true;
+    auto t = transfer::transfer_plan(map, *fx.problem, one, o);
+    ASSERT_FALSE(t.valid);
+    ReportInput in;
+    in.map = &map;
+    in.map_name = "ToKitchen";
+    in.problem = fx.problem.get();
+    in.plan = &one;
+    in.transfer = &t;
+    std::string h = html_report(in);
+    EXPECT_TRUE(contains(h, "<p class=\"verdict invalid\">Invalid: " + escape_html(t.reason)));
+    ASSERT_FALSE(t.goal.unsatisfied.empty());
+    for (const auto& u : t.goal.unsatisfied) {
+        EXPECT_TRUE(contains(h, "<li><code>" + escape_html(u) + "</code></li>")) << u;
+    }
+    EXPECT_EQ(unbalanced_tags(h), "");
+}
+
+TEST(Report, FailedStepIsMarked) {
+    Fixture fx;
+    SchemaMap map = kitchen_map(fx.t);
+    plan::Plan bad;
+    bad.steps = {{"move", {"A", "C", "D"}, {}}, {"move", {"B", "D", "A"}, {}}};
+    transfer::TransferOptions o;
+    o.keep_states = true;
+    auto t = transfer::transfer_plan(map, *fx.problem, bad, o);
+    ASSERT_FALSE(t.valid);
+    ReportInput in;
+    in.map = &map;
+    in.map_name = "ToKitchen";
+    in.problem = fx.problem.get();
+    in.plan = &bad;
+    in.transfer = &t;
+    std::string h = html_report(in);
+    EXPECT_TRUE(contains(h, "verdict invalid"));
+    EXPECT_TRUE(contains(h, "move(A, C, D)"));
+    if (t.failed_step) {
+        EXPECT_TRUE(contains(h, "not transferred: "));
+    } else {
+        EXPECT_TRUE(contains(h, "The source plan itself is invalid"));
+    }
+    EXPECT_EQ(unbalanced_tags(h), "");
+}
+
+TEST(Report, ReplanningAddsTheEfficiencyFigures) {
+    Made m(/*with_replan=*/true);
+    ASSERT_TRUE(m.rp);
+    EXPECT_TRUE(contains(m.html, "Efficiency: transfer against replanning"));
+    EXPECT_TRUE(contains(m.html, "edit distance"));
+    EXPECT_TRUE(contains(m.html, "replanning time"));
+    EXPECT_TRUE(contains(m.html, "peak memory after replanning"));
+    EXPECT_EQ(unbalanced_tags(m.html), "");
+}
+
+TEST(Report, EscapesUserText) {
+    Made m(false, "<script>alert('x')</script> & \"co\"");
+    EXPECT_FALSE(contains(m.html, "<script"));
+    EXPECT_TRUE(contains(m.html, "&lt;script&gt;alert(&#39;x&#39;)&lt;/script&gt; &amp; "
+                                 "&quot;co&quot;"));
+    EXPECT_EQ(unbalanced_tags(m.html), "");
+}
+
+TEST(Report, TheBalanceCheckCatchesUnclosedTags) {
+    EXPECT_EQ(unbalanced_tags("<p><b>x</b></p><br><svg><g/></svg>"), "");
+    EXPECT_NE(unbalanced_tags("<p><b>x</p>"), "");
+    EXPECT_NE(unbalanced_tags("<details><summary>x</summary>"), "");
+    EXPECT_EQ(network_references("<a href=\"https://example.org/x\">"),
+              std::vector<std::string>{"https://example.org/x"});
+}
+
+TEST(Svg, RendersAndInlinesWithPrefixedIds) {
+    SvgRenderer r;
+    auto svg = r.render("digraph G { a -> b; }");
+    ASSERT_TRUE(svg) << svg.error();
+    EXPECT_TRUE(contains(*svg, "<svg"));
+    std::string in = inline_svg(*svg, "p7");
+    EXPECT_EQ(in.rfind("<svg", 0), 0u);
+    EXPECT_FALSE(contains(in, "<!--"));
+    EXPECT_TRUE(contains(in, "id=\"p7_graph0\""));
+}
+
+TEST(Svg, BadDotIsAFailureNotACrash) {
+    SvgRenderer r;
+    auto svg = r.render("digraph { a -> ");
+    ASSERT_FALSE(svg);
+    EXPECT_TRUE(contains(svg.error(), "Graphviz")) << svg.error();
+    // The renderer still works afterwards.
+    EXPECT_TRUE(r.render("digraph G { a; }"));
+}
+
+TEST(Escape, HtmlText) {
+    EXPECT_EQ(escape_html("a<b>&\"c'"), "a&lt;b&gt;&amp;&quot;c&#39;");
+}
+
+} // namespace
+} // namespace catplan::report

@@ -1,0 +1,192 @@
+#include "catplan/report/svg.hpp"
+
+#include <atomic>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fmt/format.h>
+#include <fstream>
+#include <mutex>
+#include <sstream>
+#include <unistd.h>
+
+#ifdef CATPLAN_HAVE_GVC
+#include <graphviz/cgraph.h>
+#include <graphviz/graphviz_version.h>
+#include <graphviz/gvc.h>
+#endif
+
+// g++ defines __SANITIZE_ADDRESS__ under -fsanitize=address; clang answers __has_feature.
+#if defined(__SANITIZE_ADDRESS__)
+#define CATPLAN_ASAN 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define CATPLAN_ASAN 1
+#endif
+#endif
+
+#if defined(CATPLAN_HAVE_GVC) && defined(CATPLAN_ASAN)
+// Graphviz 2.42 and the font libraries under it (fontconfig, pango, glib, cairo) keep caches and
+// leak small blocks on every layout; LeakSanitizer in our sanitizer builds would fail every
+// program that draws. Only leaks allocated inside those libraries are suppressed.
+extern "C" const char* __lsan_default_suppressions();
+
+extern "C" const char* __lsan_default_suppressions() {
+    return "leak:libgvc.so\nleak:libcgraph.so\nleak:libgvplugin_\nleak:libfontconfig.so\n"
+           "leak:libpango\nleak:libglib-2.0.so\nleak:libcairo.so\nleak:libgobject-2.0.so\n";
+}
+#endif
+
+namespace catplan::report {
+
+#ifdef CATPLAN_HAVE_GVC
+
+namespace {
+
+// Graphviz reports problems through a global callback; the renderer collects them per call.
+std::string* g_errors = nullptr;
+
+int collect_error(char* message) {
+    if (g_errors != nullptr && message != nullptr) {
+        *g_errors += message;
+    }
+    return 0;
+}
+
+// One context for the whole process, never freed: Graphviz 2.42's pango plugin caches a font
+// name across contexts, and a second context after gvFreeContext reads it after it was freed.
+// The mutex serialises renderers (the context and the error callback are not thread-safe).
+std::mutex g_mutex;
+
+GVC_t* shared_context() {
+    static GVC_t* gvc = gvContext();
+    return gvc;
+}
+
+} // namespace
+
+struct SvgRenderer::Impl {};
+
+SvgRenderer::SvgRenderer() : impl_(std::make_unique<Impl>()) {}
+
+SvgRenderer::~SvgRenderer() = default;
+
+Result<std::string> SvgRenderer::render(std::string_view dot) {
+    std::lock_guard lock(g_mutex);
+    GVC_t* gvc = shared_context();
+    std::string errors;
+    g_errors = &errors;
+    agseterr(AGERR);
+    agseterrf(collect_error);
+    std::string text(dot); // agmemread wants a NUL-terminated string
+    Result<std::string> out = fail("");
+    if (Agraph_t* g = agmemread(text.c_str()); g == nullptr) {
+        out = fail("Graphviz could not read the picture: " + errors);
+    } else {
+        if (gvLayout(gvc, g, "dot") != 0) {
+            out = fail("Graphviz could not lay the picture out: " + errors);
+        } else {
+            char* data = nullptr;
+            unsigned int length = 0;
+            if (gvRenderData(gvc, g, "svg", &data, &length) == 0 && data != nullptr) {
+                out = std::string(data, length);
+            } else {
+                out = fail("Graphviz could not render SVG: " + errors);
+            }
+            gvFreeRenderData(data);
+            gvFreeLayout(gvc, g);
+        }
+        agclose(g);
+    }
+    agseterrf(nullptr);
+    g_errors = nullptr;
+    return out;
+}
+
+std::string SvgRenderer::backend() {
+    return fmt::format("libgvc {}", PACKAGE_VERSION);
+}
+
+#else // the dot program
+
+struct SvgRenderer::Impl {};
+
+SvgRenderer::SvgRenderer() : impl_(std::make_unique<Impl>()) {}
+
+SvgRenderer::~SvgRenderer() = default;
+
+namespace {
+
+std::string read_file(const std::filesystem::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+}
+
+} // namespace
+
+Result<std::string> SvgRenderer::render(std::string_view dot) {
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    fs::path dir = fs::temp_directory_path(ec);
+    if (ec) {
+        return fail("no temporary directory for Graphviz: " + ec.message());
+    }
+    // A name per process and call, so that concurrent reports do not share files.
+    static std::atomic<unsigned> counter = 0;
+    std::string stem = fmt::format("catplan-{}-{}", static_cast<long>(::getpid()), ++counter);
+    fs::path in = dir / (stem + ".dot"), out = dir / (stem + ".svg"), err = dir / (stem + ".err");
+    std::ofstream(in, std::ios::binary) << dot;
+    std::string command =
+        fmt::format("dot -Tsvg '{}' -o '{}' 2>'{}'", in.string(), out.string(), err.string());
+    int status = std::system(command.c_str());
+    std::string svg = read_file(out), errors = read_file(err);
+    fs::remove(in, ec);
+    fs::remove(out, ec);
+    fs::remove(err, ec);
+    if (status != 0 || svg.empty()) {
+        return fail(errors.empty() ? "cannot run Graphviz's `dot` program (install graphviz)"
+                                   : "Graphviz's dot failed: " + errors);
+    }
+    return svg;
+}
+
+std::string SvgRenderer::backend() {
+    return "Graphviz's dot program";
+}
+
+#endif
+
+std::string inline_svg(std::string_view svg, std::string_view prefix) {
+    std::size_t start = svg.find("<svg");
+    std::string_view body = start == std::string_view::npos ? svg : svg.substr(start);
+    std::string out;
+    out.reserve(body.size() + 64);
+    std::size_t i = 0;
+    while (i < body.size()) {
+        if (body.compare(i, 4, "<!--") == 0) {
+            std::size_t end = body.find("-->", i + 4);
+            i = end == std::string_view::npos ? body.size() : end + 3;
+            continue;
+        }
+        // Ids and the references to them (gradients, clip paths, links) get the prefix.
+        bool matched = false;
+        for (std::string_view key : {"id=\"", "url(#", "href=\"#"}) {
+            if (body.compare(i, key.size(), key) == 0) {
+                out += key;
+                out += prefix;
+                out += '_';
+                i += key.size();
+                matched = true;
+                break;
+            }
+        }
+        if (!matched) {
+            out += body[i++];
+        }
+    }
+    return out;
+}
+
+} // namespace catplan::report
