@@ -86,3 +86,27 @@ end
   initial = LightsInitial
   goal = LightsGoal
 end
+
+# A renamed ontology for the same world, and the map that migrates LightsDomain into it: exported
+# with `catplan pddl export tests/pddl/lights.cp --problem LightsProblem --map LightsToRooms`.
+@present Rooms(FreeSchema) begin
+  (Place, Bot, Located, Passage)::Ob
+  (pass_from, pass_to)::Hom(Passage, Place)
+  located_bot::Hom(Located, Bot)
+  located_place::Hom(Located, Place)
+  Bright::AttrType(Bool)
+  bright::Attr(Place, Bright)
+end
+
+@migration LightsToRooms(Rooms, Lights) begin
+  Place => Room
+  Bot => Robot
+  Located => At
+  Passage => Door
+  pass_from => door_l
+  pass_to => door_r
+  located_bot => robot_of
+  located_place => room_of
+  Bright => Lit
+  bright => isLit
+end

@@ -3,6 +3,7 @@
 
 #include "catplan/cli/commands.hpp"
 #include "catplan/cli/common.hpp"
+#include "catplan/migrate/migration.hpp"
 #include "catplan/pddl/export.hpp"
 #include "catplan/pddl/import.hpp"
 #include "catplan/pddl/ipc_plan.hpp"
@@ -94,24 +95,68 @@ int cmd_pddl_import(const std::vector<std::string>& files, const std::string& ou
 }
 
 struct ExportArgs {
-    std::string file, domain, problem, output, problem_output;
+    std::string file, domain, problem, map, output, problem_output;
 };
+
+/// The domain (and problem) carried along the map: Δ_F of every rule and state; nullopt with an
+/// error printed when the map does not fit or a rule cannot be migrated.
+std::optional<std::pair<plan::DomainPtr, plan::ProblemPtr>>
+migrate_for_export(const lang::Module& m, const ExportArgs& a, const plan::DomainPtr& domain,
+                   const plan::ProblemPtr& problem, std::ostream& err) {
+    const auto* decl = find_declaration(m, a.file, a.map, lang::DeclKind::Map, err);
+    if (decl == nullptr) {
+        return std::nullopt;
+    }
+    const migrate::SchemaMap& f = *decl->map;
+    if (domain->schema != f.source()) {
+        error(err, fmt::format("domain '{}' is on schema {}, but map '{}' migrates {}",
+                               domain->name, domain->schema->name(), a.map, f.source()->name()));
+        return std::nullopt;
+    }
+    auto d = std::make_shared<plan::Domain>();
+    d->name = domain->name + "_" + f.target()->name();
+    d->schema = f.target();
+    for (const auto& rule : domain->rules) {
+        auto migrated = migrate::migrate(f, *rule);
+        if (!migrated) {
+            error(err, fmt::format("{} cannot be migrated: {}", rule->name, migrated.error()));
+            return std::nullopt;
+        }
+        d->rules.push_back(std::make_shared<rewrite::Rule>(std::move(*migrated)));
+    }
+    plan::ProblemPtr p;
+    if (problem != nullptr) {
+        auto q = std::make_shared<plan::Problem>(*problem);
+        q->domain = d;
+        q->initial = std::make_shared<acset::ACSet>(migrate::migrate(f, *problem->initial));
+        q->goal = std::make_shared<acset::ACSet>(migrate::migrate(f, *problem->goal));
+        p = q;
+    }
+    return std::pair{plan::DomainPtr(d), p};
+}
 
 int cmd_pddl_export(const ExportArgs& a, std::ostream& out, std::ostream& err) {
     Session s;
     plan::DomainPtr domain;
     plan::ProblemPtr problem;
+    auto m = load(s, a.file, err);
+    if (!m) {
+        return kBadInput;
+    }
     if (!a.problem.empty()) {
-        problem = load_problem(s, a.file, a.domain, a.problem, err);
-        if (problem == nullptr) {
+        // From the module loaded above, so that its schemas are the ones a map refers to.
+        const auto* d = find_declaration(*m, a.file, a.problem, lang::DeclKind::Problem, err);
+        if (d == nullptr) {
             return kBadInput;
         }
+        problem = d->problem;
         domain = problem->domain;
-    } else {
-        auto m = load(s, a.file, err);
-        if (!m) {
+        if (!a.domain.empty() && a.domain != domain->name) {
+            error(err, fmt::format("problem '{}' is on domain {}, not {}", a.problem, domain->name,
+                                   a.domain));
             return kBadInput;
         }
+    } else {
         if (a.domain.empty()) {
             error(err, "pddl export needs --domain or --problem");
             return kBadInput;
@@ -121,6 +166,13 @@ int cmd_pddl_export(const ExportArgs& a, std::ostream& out, std::ostream& err) {
             return kBadInput;
         }
         domain = d->domain;
+    }
+    if (!a.map.empty()) {
+        auto migrated = migrate_for_export(*m, a, domain, problem, err);
+        if (!migrated) {
+            return kBadInput;
+        }
+        std::tie(domain, problem) = *migrated;
     }
     auto dtext = pddl::export_domain(*domain);
     if (!dtext) {
@@ -260,6 +312,9 @@ void add_pddl_commands(CLI::App& app, CommandTable& table) {
     exp->add_option("FILE", ea.file, "language file (.cp)")->required();
     exp->add_option("--domain", ea.domain, "the domain (default: the problem's domain)");
     exp->add_option("--problem", ea.problem, "the problem, exported after the domain");
+    exp->add_option("--map", ea.map,
+                    "an ontology map declared in FILE: export the domain (and problem) migrated "
+                    "along it");
     exp->add_option("-o,--output", ea.output, "write the domain (and problem) to this file");
     exp->add_option("--problem-output", ea.problem_output, "write the problem to this file");
     table.add(exp, [](std::ostream& o, std::ostream& e) { return cmd_pddl_export(ea, o, e); });

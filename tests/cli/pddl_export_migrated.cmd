@@ -1,0 +1,1 @@
+pddl export tests/pddl/lights.cp --problem LightsProblem --map LightsToRooms
