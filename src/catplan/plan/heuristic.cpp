@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <functional>
 #include <limits>
+#include <map>
 #include <queue>
 #include <unordered_map>
 #include <unordered_set>
@@ -93,15 +94,16 @@ public:
         for (const auto& rule : problem.domain->rules) {
             templates_.push_back(make_template(*rule));
         }
-        std::vector<Fact> goal_facts;
+        // One list of goal facts per way of identifying the goal's entities (see goal_entities).
+        std::vector<std::vector<Fact>> goal_facts;
         if (problem.goal) {
             const ACSet& g = *problem.goal;
-            const ACSet& init = *problem.initial;
-            auto image = goal_entities(g, init);
-            goal_facts = facts_of(g, [&](ObId ob, Part p) {
-                Part q = image[ob.index()][p];
-                return q != kNoPart ? Pos{Pos::Kind::Const, q} : Pos{};
-            });
+            for (const auto& image : goal_entities(g, *problem.initial)) {
+                goal_facts.push_back(facts_of(g, [&](ObId ob, Part p) -> std::optional<Pos> {
+                    Part q = image[ob.index()][p];
+                    return q != kNoPart ? Pos{Pos::Kind::Const, q} : Pos{};
+                }));
+            }
         }
         masks_.assign(num_types(), {});
         for (const auto& t : templates_) {
@@ -109,8 +111,10 @@ public:
                 add_mask(f);
             }
         }
-        for (const auto& f : goal_facts) {
-            add_mask(f);
+        for (const auto& facts : goal_facts) {
+            for (const auto& f : facts) {
+                add_mask(f);
+            }
         }
         // Types some rule adds to; the others keep their initial facts forever.
         dynamic_.assign(num_types(), false);
@@ -128,17 +132,22 @@ public:
                 }
             }
         }
-        for (const auto& f : goal_facts) {
-            goal_.push_back(prop(key_of(f.type, mask_of(f), f.pos)));
+        for (const auto& facts : goal_facts) {
+            std::vector<std::uint32_t> goal;
+            for (const auto& f : facts) {
+                goal.push_back(prop(key_of(f.type, mask_of(f), f.pos)));
+            }
+            std::sort(goal.begin(), goal.end());
+            goal.erase(std::unique(goal.begin(), goal.end()), goal.end());
+            goals_.push_back(std::move(goal));
         }
-        std::sort(goal_.begin(), goal_.end());
-        goal_.erase(std::unique(goal_.begin(), goal_.end()), goal_.end());
-        ground(*problem.initial);
+        ground();
     }
 
     std::size_t num_props() const { return num_props_; }
 
-    const std::vector<std::uint32_t>& goal() const { return goal_; }
+    // The goal's props, one list per identification of its entities; h is the least over them.
+    const std::vector<std::vector<std::uint32_t>>& goals() const { return goals_; }
 
     // The props true in x (projections of its facts that some precondition or goal uses).
     void props_of(const ACSet& x, std::vector<char>& truth) const {
@@ -175,40 +184,167 @@ private:
         return static_cast<std::uint32_t>(s.num_obs() + s.num_homs() + s.num_attrs());
     }
 
+    // Decides which parts are entities (heuristic.hpp): whole objects no rule creates, deletes or
+    // merges, then, in objects some rule does, the initial parts no rule can ever delete.
     void classify(const Problem& problem) {
         const auto& s = *schema_;
+        const ACSet& init = *problem.initial;
+        const auto& rules = problem.domain->rules;
         entity_.assign(s.num_obs(), true);
-        for (const auto& rule : problem.domain->rules) {
+        for (const auto& rule : rules) {
             for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
                 ObId ob(o);
                 std::size_t nk = rule->K.num_parts(ob);
-                std::vector<bool> hit(rule->R.num_parts(ob), false);
-                bool injective = true;
-                for (Part k = 0; k < nk; ++k) {
-                    Part q = rule->r(ob, k);
-                    injective = injective && !hit[q];
-                    hit[q] = true;
-                }
-                if (rule->L.num_parts(ob) != nk || rule->R.num_parts(ob) != nk || !injective) {
+                if (rule->L.num_parts(ob) != nk || rule->R.num_parts(ob) != nk ||
+                    !r_injective(*rule, ob)) {
                     entity_[o] = false;
                 }
             }
         }
+        entity_parts_.assign(s.num_obs(), {});
+        by_name_.assign(s.num_obs(), {});
+        has_entities_.assign(s.num_obs(), false);
+        auto gained = gainable_homs(rules);
+        for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
+            ObId ob(o);
+            if (entity_[o]) {
+                has_entities_[o] = true;
+                for (Part p = 0; p < init.num_parts(ob); ++p) {
+                    entity_parts_[o].push_back(p);
+                }
+                continue;
+            }
+            if (!std::all_of(rules.begin(), rules.end(),
+                             [&](const RulePtr& r) { return r_injective(*r, ob); })) {
+                continue; // a rule merges parts of ob: identities are not stable
+            }
+            for (Part p = 0; p < init.num_parts(ob); ++p) {
+                auto name = init.part_name(ob, p);
+                if (name.empty() || init.find_part(ob, name) != p ||
+                    deletable(rules, gained, init, ob, p)) {
+                    continue;
+                }
+                entity_parts_[o].push_back(p);
+                by_name_[o].emplace(std::string(name), p);
+            }
+            has_entities_[o] = !entity_parts_[o].empty();
+        }
     }
 
-    // The initial entity standing for each goal entity: one monic morphism from the goal's
-    // entities (with their attributes and the homs between them) into the initial state, the
-    // goal's names bound to the initial state's; failing that, by name alone (kNoPart: unknown).
-    std::vector<std::vector<Part>> goal_entities(const ACSet& g, const ACSet& init) const {
+    static bool r_injective(const Rule& rule, ObId ob) {
+        std::vector<bool> hit(rule.R.num_parts(ob), false);
+        for (Part k = 0; k < rule.K.num_parts(ob); ++k) {
+            Part q = rule.r(ob, k);
+            if (hit[q]) {
+                return false;
+            }
+            hit[q] = true;
+        }
+        return true;
+    }
+
+    // Per hom: whether some rule makes it point into a kept part where it did not before (R sets
+    // it on a created part, or on a kept part whose K value is another or unset). A hom that no
+    // rule gains keeps every kept part's preimage under it from growing.
+    std::vector<bool> gainable_homs(const std::vector<RulePtr>& rules) const {
         const auto& s = *schema_;
-        std::vector<std::vector<Part>> image(s.num_obs());
+        std::vector<bool> gained(s.num_homs(), false);
+        for (const auto& rule : rules) {
+            for (std::uint32_t h = 0; h < s.num_homs(); ++h) {
+                HomId f(h);
+                ObId dom = s.hom(f).dom, cod = s.hom(f).codom;
+                std::vector<Part> k_of_r(rule->R.num_parts(dom), kNoPart);
+                for (Part k = 0; k < rule->K.num_parts(dom); ++k) {
+                    k_of_r[rule->r(dom, k)] = k;
+                }
+                std::vector<bool> kept_target(rule->R.num_parts(cod), false);
+                for (Part k = 0; k < rule->K.num_parts(cod); ++k) {
+                    kept_target[rule->r(cod, k)] = true;
+                }
+                for (Part q = 0; q < rule->R.num_parts(dom); ++q) {
+                    Part t = rule->R.subpart(f, q);
+                    if (t == kNoPart || !kept_target[t]) {
+                        continue;
+                    }
+                    Part k = k_of_r[q];
+                    Part before = k == kNoPart ? kNoPart : rule->K.subpart(f, k);
+                    if (before == kNoPart || rule->r(cod, before) != t) {
+                        gained[h] = true;
+                    }
+                }
+            }
+        }
+        return gained;
+    }
+
+    // Whether some rule's deleted L part of ob might match initial part p in a reachable state.
+    // A deleted L part that some hom no rule gains points into can only match a part that has
+    // such a preimage already (a monic match maps L's preimage into X's); p without one is safe
+    // from it forever, since kept parts never gain preimages under that hom.
+    bool deletable(const std::vector<RulePtr>& rules, const std::vector<bool>& gained,
+                   const ACSet& init, ObId ob, Part p) const {
+        const auto& s = *schema_;
+        for (const auto& rule : rules) {
+            std::vector<bool> kept(rule->L.num_parts(ob), false);
+            for (Part k = 0; k < rule->K.num_parts(ob); ++k) {
+                kept[rule->l(ob, k)] = true;
+            }
+            for (Part d = 0; d < rule->L.num_parts(ob); ++d) {
+                if (kept[d]) {
+                    continue;
+                }
+                bool excluded = false;
+                for (HomId f : s.homs_into(ob)) {
+                    if (!gained[f.index()] && !rule->L.incident(f, d).empty() &&
+                        init.incident(f, p).empty()) {
+                        excluded = true;
+                    }
+                }
+                if (!excluded) {
+                    return true;
+                }
+            }
+        }
+        return false;
+    }
+
+    // The entity a part of state x stands for (its initial part id), or nullopt for a fact part.
+    std::optional<Part> state_entity(const ACSet& x, ObId ob, Part p) const {
+        if (entity_[ob.index()]) {
+            return p;
+        }
+        const auto& names = by_name_[ob.index()];
+        if (names.empty()) {
+            return std::nullopt;
+        }
+        auto it = names.find(x.part_name(ob, p));
+        if (it == names.end()) {
+            return std::nullopt;
+        }
+        return it->second;
+    }
+
+    // The ways the goal's parts of objects with entities can stand for initial entities: the
+    // monic morphisms from those parts (with their attributes and the homs between them) into
+    // the initial state's entities, the goal's names bound to the initial state's. A goal may
+    // leave entities interchangeable (two purple blocks); keeping every identification (up to
+    // kMaxGoalMaps) and taking the least h over them keeps h at 0 in every goal state. With more
+    // identifications than that, or none, the entities not fixed by name are wildcards.
+    static constexpr std::uint64_t kMaxGoalMaps = 24;
+
+    std::vector<std::vector<std::vector<Part>>> goal_entities(const ACSet& g,
+                                                              const ACSet& init) const {
+        const auto& s = *schema_;
+        std::vector<std::vector<Part>> by_name(s.num_obs());
         ACSet only(g);
         hom::HomSearchOptions opt;
         opt.monic_all = true;
+        opt.max_results = kMaxGoalMaps + 1;
+        opt.accept = [&](ObId ob, Part, Part q) { return is_entity(ob, q); };
         for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
             ObId ob(o);
-            image[o].assign(g.num_parts(ob), kNoPart);
-            if (!entity_[o]) {
+            by_name[o].assign(g.num_parts(ob), kNoPart);
+            if (!has_entities_[o]) {
                 for (Part p = static_cast<Part>(g.num_parts(ob)); p-- > 0;) {
                     only.remove_part(ob, p);
                 }
@@ -216,104 +352,138 @@ private:
             }
             for (Part p = 0; p < g.num_parts(ob); ++p) {
                 auto name = g.part_name(ob, p);
-                if (auto q = name.empty() ? std::nullopt : init.find_part(ob, name)) {
-                    image[o][p] = *q;
+                auto q = name.empty() ? std::nullopt : init.find_part(ob, name);
+                if (q && is_entity(ob, *q)) {
+                    by_name[o][p] = *q;
                     opt.bind(ob, p, *q);
                 }
             }
         }
-        auto m = hom::find_homomorphism(only, init, opt);
-        if (m) {
+        auto ms = hom::find_homomorphisms(only, init, opt).morphisms;
+        if (ms.empty() || ms.size() > kMaxGoalMaps) {
+            return {by_name};
+        }
+        std::vector<std::vector<std::vector<Part>>> images;
+        for (const auto& m : ms) {
+            auto image = by_name;
             for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
-                if (entity_[o]) {
-                    image[o] = m->components[o];
+                if (has_entities_[o]) {
+                    image[o] = m.components[o];
                 }
             }
+            images.push_back(std::move(image));
         }
-        return image;
+        return images;
     }
 
-    // The facts of a state or pattern; `entity` says what an entity part becomes.
-    std::vector<Fact> facts_of(const ACSet& a, const std::function<Pos(ObId, Part)>& entity) const {
+    bool is_entity(ObId ob, Part initial_part) const {
+        const auto& ps = entity_parts_[ob.index()];
+        return std::binary_search(ps.begin(), ps.end(), initial_part);
+    }
+
+    // The facts of a state or pattern. `entity` says what a part of an object with entities
+    // stands for: a position (a slot, an initial entity, a wildcard), or nullopt for a fact part.
+    using EntityOf = std::function<std::optional<Pos>(ObId, Part)>;
+
+    std::vector<Fact> facts_of(const ACSet& a, const EntityOf& entity) const {
         const auto& s = *schema_;
         std::vector<Fact> facts;
-        auto value_pos = [](const Value& v) {
-            return v.is_concrete() ? Pos{Pos::Kind::Const, v.hash()} : Pos{};
-        };
         for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
             ObId ob(o);
             for (Part p = 0; p < a.num_parts(ob); ++p) {
-                if (!entity_[o]) {
-                    Fact f{o, {}};
-                    for (HomId h : s.homs_from(ob)) {
-                        ObId cod = s.hom(h).codom;
-                        if (!entity_[cod.index()]) {
-                            continue;
-                        }
-                        Part q = a.subpart(h, p);
-                        f.pos.push_back(q == kNoPart ? Pos{} : entity(cod, q));
-                    }
-                    for (AttrId at : s.attrs_from(ob)) {
-                        f.pos.push_back(value_pos(a.subpart(at, p)));
-                    }
-                    facts.push_back(std::move(f));
-                    continue;
-                }
-                for (HomId h : s.homs_from(ob)) {
-                    ObId cod = s.hom(h).codom;
-                    Part q = a.subpart(h, p);
-                    if (entity_[cod.index()] && q != kNoPart) {
-                        facts.push_back({static_cast<std::uint32_t>(s.num_obs() + h.index()),
-                                         {entity(ob, p), entity(cod, q)}});
-                    }
-                }
-                for (AttrId at : s.attrs_from(ob)) {
-                    const Value& v = a.subpart(at, p);
-                    if (v.is_concrete()) {
-                        facts.push_back(
-                            {static_cast<std::uint32_t>(s.num_obs() + s.num_homs() + at.index()),
-                             {entity(ob, p), value_pos(v)}});
-                    }
+                auto e = has_entities_[o] ? entity(ob, p) : std::nullopt;
+                if (e) {
+                    entity_facts(a, ob, p, *e, entity, facts);
+                } else {
+                    facts.push_back(part_fact(a, ob, p, entity));
                 }
             }
         }
         return facts;
     }
 
-    std::vector<Fact> state_facts(const ACSet& x) const {
-        return facts_of(x, [](ObId, Part p) { return Pos{Pos::Kind::Const, p}; });
+    static Pos value_pos(const Value& v) {
+        return v.is_concrete() ? Pos{Pos::Kind::Const, v.hash()} : Pos{};
     }
 
+    // A fact part (a predicate object's part): its hom values into objects with entities (a
+    // wildcard where the target is not an entity) and its attribute values.
+    Fact part_fact(const ACSet& a, ObId ob, Part p, const EntityOf& entity) const {
+        const auto& s = *schema_;
+        Fact f{ob.index(), {}};
+        for (HomId h : s.homs_from(ob)) {
+            ObId cod = s.hom(h).codom;
+            if (!has_entities_[cod.index()]) {
+                continue;
+            }
+            Part q = a.subpart(h, p);
+            auto e = q == kNoPart ? std::nullopt : entity(cod, q);
+            f.pos.push_back(e ? *e : Pos{});
+        }
+        for (AttrId at : s.attrs_from(ob)) {
+            f.pos.push_back(value_pos(a.subpart(at, p)));
+        }
+        return f;
+    }
+
+    // An entity part's facts: its hom values into entities and its concrete attribute values.
+    void entity_facts(const ACSet& a, ObId ob, Part p, Pos self, const EntityOf& entity,
+                      std::vector<Fact>& facts) const {
+        const auto& s = *schema_;
+        for (HomId h : s.homs_from(ob)) {
+            ObId cod = s.hom(h).codom;
+            Part q = a.subpart(h, p);
+            auto e = q == kNoPart || !has_entities_[cod.index()] ? std::nullopt : entity(cod, q);
+            if (e) {
+                facts.push_back({static_cast<std::uint32_t>(s.num_obs() + h.index()), {self, *e}});
+            }
+        }
+        for (AttrId at : s.attrs_from(ob)) {
+            const Value& v = a.subpart(at, p);
+            if (v.is_concrete()) {
+                facts.push_back(
+                    {static_cast<std::uint32_t>(s.num_obs() + s.num_homs() + at.index()),
+                     {self, value_pos(v)}});
+            }
+        }
+    }
+
+    std::vector<Fact> state_facts(const ACSet& x) const {
+        return facts_of(x, [&](ObId ob, Part p) -> std::optional<Pos> {
+            auto e = state_entity(x, ob, p);
+            return e ? std::optional<Pos>(Pos{Pos::Kind::Const, *e}) : std::nullopt;
+        });
+    }
+
+    // A rule's slots are its kept L parts of objects with entities; its deleted L parts and
+    // created R parts are fact parts.
     Template make_template(const Rule& rule) const {
         const auto& s = *schema_;
         Template t;
         std::vector<std::vector<std::uint64_t>> slot(s.num_obs());
-        for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
-            if (!entity_[o]) {
-                continue;
-            }
-            for (Part p = 0; p < rule.L.num_parts(ObId(o)); ++p) {
-                slot[o].push_back(t.slot_obs.size());
-                t.slot_obs.push_back(ObId(o));
-            }
-        }
-        t.pre = facts_of(rule.L, [&](ObId ob, Part p) {
-            return Pos{Pos::Kind::Slot, slot[ob.index()][p]};
-        });
-        // R's entity parts come from K (entity objects are never created): R -> K -> L.
         std::vector<std::vector<std::uint64_t>> r_slot(s.num_obs());
+        constexpr auto kNone = std::numeric_limits<std::uint64_t>::max();
         for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
-            if (!entity_[o]) {
+            ObId ob(o);
+            slot[o].assign(rule.L.num_parts(ob), kNone);
+            r_slot[o].assign(rule.R.num_parts(ob), kNone);
+            if (!has_entities_[o]) {
                 continue;
             }
-            r_slot[o].assign(rule.R.num_parts(ObId(o)), 0);
-            for (Part k = 0; k < rule.K.num_parts(ObId(o)); ++k) {
-                r_slot[o][rule.r(ObId(o), k)] = slot[o][rule.l(ObId(o), k)];
+            for (Part k = 0; k < rule.K.num_parts(ob); ++k) {
+                slot[o][rule.l(ob, k)] = t.slot_obs.size();
+                r_slot[o][rule.r(ob, k)] = t.slot_obs.size();
+                t.slot_obs.push_back(ob);
             }
         }
-        for (auto& f : facts_of(rule.R, [&](ObId ob, Part p) {
-                 return Pos{Pos::Kind::Slot, r_slot[ob.index()][p]};
-             })) {
+        auto by = [](const std::vector<std::vector<std::uint64_t>>& slots) {
+            return [&slots](ObId ob, Part p) -> std::optional<Pos> {
+                std::uint64_t v = slots[ob.index()][p];
+                return v == kNone ? std::nullopt : std::optional<Pos>(Pos{Pos::Kind::Slot, v});
+            };
+        };
+        t.pre = facts_of(rule.L, by(slot));
+        for (auto& f : facts_of(rule.R, by(r_slot))) {
             if (std::find(t.pre.begin(), t.pre.end(), f) == t.pre.end()) {
                 t.add.push_back(std::move(f));
             }
@@ -349,7 +519,7 @@ private:
 
     // Every injective assignment of each rule's entity slots to the initial state's entities
     // whose static preconditions hold initially; then the adds, once every needed prop exists.
-    void ground(const ACSet& initial) {
+    void ground() {
         struct Pending {
             std::size_t rule;
             std::vector<Part> assignment;
@@ -387,7 +557,7 @@ private:
                     pending.push_back({ri, a});
                     return;
                 }
-                for (Part p = 0; p < initial.num_parts(t.slot_obs[i]); ++p) {
+                for (Part p : entity_parts_[t.slot_obs[i].index()]) {
                     bool used = false;
                     for (std::size_t j = 0; j < i; ++j) {
                         used = used || (t.slot_obs[j] == t.slot_obs[i] && a[j] == p);
@@ -445,14 +615,17 @@ private:
     }
 
     schema::SchemaPtr schema_;
-    std::vector<bool> entity_;
+    std::vector<bool> entity_;       // per ob: every part is an entity (none created or deleted)
+    std::vector<bool> has_entities_; // per ob: some initial part is an entity
+    std::vector<std::vector<Part>> entity_parts_; // per ob: the initial entities, sorted
+    std::vector<std::map<std::string, Part, std::less<>>> by_name_; // per ob not entity_: by name
     std::vector<Template> templates_;
     std::vector<std::vector<std::uint64_t>> masks_;
     std::vector<bool> dynamic_;
     std::unordered_set<std::uint64_t> initial_static_;
     std::unordered_map<std::uint64_t, std::uint32_t> props_;
     std::size_t num_props_ = 0;
-    std::vector<std::uint32_t> goal_;
+    std::vector<std::vector<std::uint32_t>> goals_;
     std::vector<Action> actions_;
     std::vector<std::vector<std::uint32_t>> pre_of_;
 };
@@ -468,11 +641,15 @@ public:
 
     int evaluate(const ACSet& x) override {
         task_.props_of(x, truth_);
-        int h = 0;
-        for (auto g : task_.goal()) {
-            h += truth_[g] ? 0 : 1;
+        int best = kDeadEnd;
+        for (const auto& goal : task_.goals()) {
+            int h = 0;
+            for (auto g : goal) {
+                h += truth_[g] ? 0 : 1;
+            }
+            best = std::min(best, h);
         }
-        return h;
+        return best;
     }
 
 private:
@@ -530,19 +707,37 @@ public:
                 }
             }
         }
+        int best = kDeadEnd;
+        for (const auto& goal : task_.goals()) {
+            best = std::min(best, ff_ ? relaxed_plan_size(goal) : additive_cost(goal));
+        }
+        return best;
+    }
+
+private:
+    int additive_cost(const std::vector<std::uint32_t>& goal) const {
+        constexpr int kInf = std::numeric_limits<int>::max();
         long total = 0;
-        for (auto g : task_.goal()) {
+        for (auto g : goal) {
             if (cost_[g] == kInf) {
                 return kDeadEnd;
             }
             total += cost_[g];
         }
-        if (!ff_) {
-            return static_cast<int>(std::min<long>(total, kDeadEnd - 1));
+        return static_cast<int>(std::min<long>(total, kDeadEnd - 1));
+    }
+
+    // The relaxed plan: the best supporter of each goal prop, then of their preconditions.
+    int relaxed_plan_size(const std::vector<std::uint32_t>& goal) {
+        constexpr int kInf = std::numeric_limits<int>::max();
+        const auto& actions = task_.actions();
+        for (auto g : goal) {
+            if (cost_[g] == kInf) {
+                return kDeadEnd;
+            }
         }
-        // The relaxed plan: the best supporter of each goal prop, then of their preconditions.
         in_plan_.assign(actions.size(), false);
-        std::vector<std::uint32_t> stack(task_.goal().begin(), task_.goal().end());
+        std::vector<std::uint32_t> stack(goal.begin(), goal.end());
         marked_.assign(task_.num_props(), false);
         int count = 0;
         while (!stack.empty()) {
@@ -562,7 +757,6 @@ public:
         return count;
     }
 
-private:
     RelaxedTask task_;
     bool ff_;
     std::vector<char> truth_;

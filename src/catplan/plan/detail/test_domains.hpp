@@ -244,4 +244,165 @@ inline std::vector<std::string> block_names(int n) {
     return names;
 }
 
+// ---- The paper's ColorBlocksworld (examples/colorblocksworld/colorblocksworld.cp)
+// ---------------- Built here because the plan layer may not use the language layer: Block, Empty,
+// Gripper, On (on_l, on_r : On -> Block), isEmpty : Empty -> Block, isHolding : Gripper -> Block,
+// and the attributes hasColor, isClear, isOnTable of Block. "The hand is empty" is an unnamed
+// marker block that isHolding(gripper) and isEmpty(empty) both point at; taking a block deletes
+// `empty` and the marker, putting one down creates new ones. The rules are those of the .cp file.
+
+struct PaperIds {
+    ObId block{0}, empty{1}, gripper{2}, on{3};
+    HomId on_l{0}, on_r{1}, is_empty{2}, is_holding{3};
+    AttrId color{0}, clear{1}, table{2};
+    AttrTypeId color_t{0}, clear_t{1}, table_t{2};
+};
+
+inline constexpr PaperIds kP{};
+
+inline schema::SchemaPtr paper_schema() {
+    auto s = std::make_shared<Schema>("ColorBlocksworld");
+    ObId b = s->add_ob("Block"), e = s->add_ob("Empty"), g = s->add_ob("Gripper"),
+         on = s->add_ob("On");
+    s->add_hom("on_l", on, b);
+    s->add_hom("on_r", on, b);
+    s->add_hom("isEmpty", e, b);
+    s->add_hom("isHolding", g, b);
+    auto c = s->add_attr_type("Color", schema::ValueKind::String);
+    auto cl = s->add_attr_type("Clear", schema::ValueKind::Bool);
+    auto t = s->add_attr_type("OnTable", schema::ValueKind::Bool);
+    s->add_attr("hasColor", b, c);
+    s->add_attr("isClear", b, cl);
+    s->add_attr("isOnTable", b, t);
+    return s;
+}
+
+/// A block whose attributes are the given values, a fresh variable where not given.
+inline Part paper_block(ACSet& x, const std::string& name, std::optional<Value> color = {},
+                        std::optional<bool> clear = {}, std::optional<bool> table = {}) {
+    Part p = x.add_part(kP.block, name);
+    x.set_subpart(kP.color, p, color ? *color : x.add_var(kP.color_t));
+    x.set_subpart(kP.clear, p, clear ? Value::boolean(*clear) : x.add_var(kP.clear_t));
+    x.set_subpart(kP.table, p, table ? Value::boolean(*table) : x.add_var(kP.table_t));
+    return p;
+}
+
+/// The gripper (named) and, when `empty`, the hand-empty marker: `empty` and an unnamed block.
+inline Part paper_hand(ACSet& x, bool empty) {
+    Part g = x.add_part(kP.gripper, "gripper");
+    if (empty) {
+        Part m = paper_block(x, "");
+        x.set_subpart(kP.is_empty, x.add_part(kP.empty, "empty"), m);
+        x.set_subpart(kP.is_holding, g, m);
+    }
+    return g;
+}
+
+inline Part paper_on(ACSet& x, Part top, Part below, const std::string& name) {
+    Part p = x.add_part(kP.on, name);
+    x.set_subpart(kP.on_l, p, top);
+    x.set_subpart(kP.on_r, p, below);
+    return p;
+}
+
+/// A rule of the paper's domain: K holds the gripper (its hom unset: the rule redirects it) and
+/// the blocks `params`, each attribute a variable; l and r follow the names.
+inline RulePtr paper_rule(const std::string& name, const ACSet& l, const ACSet& r,
+                          const std::vector<std::string>& params) {
+    auto rule = std::make_shared<Rule>(l.schema_ptr());
+    rule->name = name;
+    rule->L = l;
+    rule->R = r;
+    rule->K.add_part(kP.gripper, "gripper");
+    for (const auto& p : params) {
+        paper_block(rule->K, p);
+    }
+    rule->l = by_names(rule->K, rule->L);
+    rule->r = by_names(rule->K, rule->R);
+    for (const auto& p : params) {
+        rule->parameters.push_back({p, kP.block, *rule->L.find_part(kP.block, p)});
+    }
+    return rule;
+}
+
+inline DomainPtr paper_domain() {
+    auto s = paper_schema();
+    auto d = std::make_shared<Domain>();
+    d->name = "Blocksworld";
+    d->schema = s;
+    {
+        ACSet l(s), r(s);
+        paper_hand(l, true);
+        Part b = paper_block(l, "block", {}, true), u = paper_block(l, "underblock");
+        paper_on(l, b, u, "o");
+        Part g = paper_hand(r, false);
+        Part rb = paper_block(r, "block");
+        paper_block(r, "underblock", {}, true);
+        r.set_subpart(kP.is_holding, g, rb);
+        d->rules.push_back(paper_rule("unstack", l, r, {"block", "underblock"}));
+    }
+    {
+        ACSet l(s), r(s);
+        Part g = paper_hand(l, false);
+        Part b = paper_block(l, "block");
+        paper_block(l, "underblock", {}, true);
+        l.set_subpart(kP.is_holding, g, b);
+        paper_hand(r, true);
+        Part rb = paper_block(r, "block"), ru = paper_block(r, "underblock", {}, false);
+        paper_on(r, rb, ru, "o");
+        d->rules.push_back(paper_rule("stack", l, r, {"block", "underblock"}));
+    }
+    {
+        ACSet l(s), r(s);
+        paper_hand(l, true);
+        paper_block(l, "block", {}, true, true);
+        Part g = paper_hand(r, false);
+        Part rb = paper_block(r, "block", {}, {}, false);
+        r.set_subpart(kP.is_holding, g, rb);
+        d->rules.push_back(paper_rule("pickup", l, r, {"block"}));
+    }
+    {
+        ACSet l(s), r(s);
+        Part g = paper_hand(l, false);
+        l.set_subpart(kP.is_holding, g, paper_block(l, "block"));
+        paper_hand(r, true);
+        paper_block(r, "block", {}, true, true);
+        d->rules.push_back(paper_rule("putdown", l, r, {"block"}));
+    }
+    return d;
+}
+
+/// The case study: towers E on D on C, and A, B, F on the table; the goal a tower coloured,
+/// from top to bottom, purple, green, red, purple, yellow.
+inline ProblemPtr paper_case_study() {
+    auto d = paper_domain();
+    auto p = std::make_shared<Problem>();
+    p->name = "CaseStudy";
+    p->domain = d;
+    ACSet x(d->schema);
+    paper_hand(x, true);
+    auto str = [](const char* c) { return Value::string(c); };
+    Part a = paper_block(x, "A", str("green"), true, true);
+    Part b = paper_block(x, "B", str("red"), true, true);
+    Part c = paper_block(x, "C", str("yellow"), false, true);
+    Part dd = paper_block(x, "D", str("purple"), false, false);
+    Part e = paper_block(x, "E", str("purple"), true, false);
+    paper_block(x, "F", str("blue"), true, true);
+    (void)a;
+    (void)b;
+    paper_on(x, e, dd, "x1");
+    paper_on(x, dd, c, "x2");
+    p->initial = std::make_shared<ACSet>(std::move(x));
+    ACSet g(d->schema);
+    std::vector<Part> t;
+    for (const char* col : {"purple", "green", "red", "purple", "yellow"}) {
+        t.push_back(paper_block(g, "", str(col)));
+    }
+    for (std::size_t i = 0; i + 1 < t.size(); ++i) {
+        paper_on(g, t[i], t[i + 1], "");
+    }
+    p->goal = std::make_shared<ACSet>(std::move(g));
+    return p;
+}
+
 } // namespace catplan::plan::testing
