@@ -89,6 +89,69 @@ bool contains(const std::vector<Part>& sorted, Part p) {
     return std::binary_search(sorted.begin(), sorted.end(), p);
 }
 
+// SPO: the parts a match deletes, closed under "refers to a deleted part" (reference §4.5);
+// fails with a reason when the closure reaches the image of a kept part whose reference the rule
+// does not redirect. Costs O(size of X) for the marks, which SPO rules alone pay.
+Result<std::vector<std::vector<Part>>> cascade(const Shape& shape, const ACSet& x,
+                                               const ACSetMorphism& m) {
+    const auto& rule = shape.rule;
+    const auto& s = x.schema();
+    auto deleted = deleted_parts(shape, m);
+    std::vector<std::vector<char>> mark(s.num_obs());
+    std::vector<std::vector<Part>> kept_at(s.num_obs()); // per ob, per X part: K part or kNoPart
+    std::vector<std::pair<ObId, Part>> work;
+    for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
+        ObId ob(o);
+        mark[o].assign(x.num_parts(ob), 0);
+        kept_at[o].assign(x.num_parts(ob), kNoPart);
+        for (Part k = 0; k < rule.K.num_parts(ob); ++k) {
+            kept_at[o][m(ob, rule.l(ob, k))] = k;
+        }
+        for (Part y : deleted[o]) {
+            mark[o][y] = 1;
+            work.emplace_back(ob, y);
+        }
+    }
+    while (!work.empty()) {
+        auto [ob, y] = work.back();
+        work.pop_back();
+        for (HomId f : s.homs_into(ob)) {
+            ObId dom = s.hom(f).dom;
+            for (Part q : x.incident(f, y)) {
+                if (mark[dom.index()][q]) {
+                    continue;
+                }
+                Part k = kept_at[dom.index()][q];
+                if (k != kNoPart) {
+                    if (shape.redirects(f, k)) {
+                        continue;
+                    }
+                    return fail(fmt::format("SPO: deleting {} {} would delete {} {}, which the "
+                                            "rule keeps",
+                                            s.ob(ob).name, x.part_label(ob, y), s.ob(dom).name,
+                                            x.part_label(dom, q)));
+                }
+                mark[dom.index()][q] = 1;
+                deleted[dom.index()].push_back(q);
+                work.emplace_back(dom, q);
+            }
+        }
+    }
+    for (auto& d : deleted) {
+        std::sort(d.begin(), d.end());
+    }
+    return deleted;
+}
+
+// The parts applying the rule at m deletes, per object, sorted (the cascade under SPO).
+Result<std::vector<std::vector<Part>>> parts_to_delete(const Shape& shape, const ACSet& x,
+                                                       const ACSetMorphism& m) {
+    if (shape.rule.semantics == Semantics::SPO) {
+        return cascade(shape, x, m);
+    }
+    return deleted_parts(shape, m);
+}
+
 std::optional<std::string> identification_problem(const Shape& shape, const ACSet& x,
                                                   const ACSetMorphism& m) {
     const auto& rule = shape.rule;
@@ -181,7 +244,11 @@ std::optional<std::string> validity_problem(const Shape& shape, const ACSet& x,
     if (auto p = identification_problem(shape, x, m)) {
         return p;
     }
-    if (auto p = dangling_problem(shape, x, m)) {
+    if (shape.rule.semantics == Semantics::SPO) {
+        if (auto d = cascade(shape, x, m); !d) {
+            return d.error();
+        }
+    } else if (auto p = dangling_problem(shape, x, m)) {
         return p;
     }
     return condition_problem(shape.rule, x, m);
@@ -300,7 +367,11 @@ Result<InPlaceOutcome> apply_in_place(const Shape& shape, ACSet& x, const ACSetM
         }
     };
     // Delete, largest id first, so the part moved into a freed slot is never one to delete.
-    auto deleted = deleted_parts(shape, m);
+    auto to_delete = parts_to_delete(shape, x, m);
+    if (!to_delete) {
+        return fail(to_delete.error());
+    }
+    auto& deleted = *to_delete;
     for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
         ObId ob(o);
         for (auto it = deleted[o].rbegin(); it != deleted[o].rend(); ++it) {
@@ -448,7 +519,7 @@ std::vector<ACSetMorphism> find_matches(const Rule& rule, const ACSet& x,
     opt.monic_all = options.monic;
     opt.monic = options.monic_objects;
     opt.initial = options.initial;
-    if (options.monic) {
+    if (options.monic && rule.semantics == Semantics::DPO) {
         // Dangling, checked as soon as a deleted part is placed: every X part referring to its
         // image must be the image of an L part referring to it, or of an L part whose hom is unset
         // (which the full check then examines). Valid for monic matches only.

@@ -338,3 +338,110 @@ TEST(DPOProperties, ResultIsThePushoutOfTheComplementAndBothApplicationsAgree) {
 
 } // namespace
 } // namespace catplan::rewrite
+
+namespace catplan::rewrite {
+namespace {
+
+// reference §4.6 (rules from migrations, Representable.jl): L = two loops e1, e2 at one vertex,
+// K = that vertex v, R = one edge e with r(v) = src(e) (so tgt(e) is new); SPO, monic, and the
+// new weight given by the expression `vs -> 0.`. On a path 1 -> 2 with two loops at 2 (weights
+// -1, 10, 10) the result is isomorphic to V=3, E=2, src=[1,2], tgt=[2,3], weight=[-1., 0.].
+TEST(SPO, ReferenceRepresentableExample) {
+    auto s = std::make_shared<schema::Schema>("WeightedGraph");
+    ObId v = s->add_ob("V"), e = s->add_ob("E");
+    HomId src = s->add_hom("src", e, v), tgt = s->add_hom("tgt", e, v);
+    AttrTypeId wt = s->add_attr_type("Weight", schema::ValueKind::Float);
+    AttrId weight = s->add_attr("weight", e, wt);
+    auto edge = [&](ACSet& g, Part a, Part b, Value w) {
+        Part ed = g.add_part(e);
+        g.set_subpart(src, ed, a);
+        g.set_subpart(tgt, ed, b);
+        g.set_subpart(weight, ed, w);
+    };
+    Rule rule(s);
+    rule.semantics = Semantics::SPO;
+    Part lv = rule.L.add_part(v);
+    edge(rule.L, lv, lv, rule.L.add_var(wt));
+    edge(rule.L, lv, lv, rule.L.add_var(wt));
+    rule.K.add_part(v);
+    Part rs = rule.R.add_part(v), rt = rule.R.add_part(v);
+    edge(rule.R, rs, rt, rule.R.add_var(wt));
+    rule.l.components = {{lv}, {}};
+    rule.l.var_components = {{}};
+    rule.r.components = {{rs}, {}};
+    rule.r.var_components = {{}};
+    AttrExpr zero;
+    zero.constant = Value::real(0.0);
+    rule.exprs = {{zero}};
+    ASSERT_TRUE(check_rule(rule).empty());
+
+    ACSet g(s);
+    g.add_parts(v, 2);
+    edge(g, 0, 1, Value::real(-1));
+    edge(g, 1, 1, Value::real(10));
+    edge(g, 1, 1, Value::real(10));
+    auto matches = find_matches(rule, g);
+    ASSERT_FALSE(matches.empty());
+    auto y = rewrite(rule, g, matches[0]);
+    ASSERT_TRUE(y.has_value()) << y.error();
+    ACSet expected(s);
+    expected.add_parts(v, 3);
+    edge(expected, 0, 1, Value::real(-1));
+    edge(expected, 1, 2, Value::real(0));
+    EXPECT_TRUE(hom::is_isomorphic(expected, y->result));
+    ACSet in_place = g;
+    ASSERT_TRUE(rewrite_in_place(rule, in_place, matches[0]).has_value());
+    EXPECT_TRUE(hom::is_isomorphic(expected, in_place));
+}
+
+// Deleting the middle vertex of a path 1 -> 2 -> 3: DPO finds no match (dangling edges), SPO
+// deletes the vertex and both edges.
+TEST(SPO, DeletesDanglingEdgesWhereDpoRejects) {
+    Graphs g;
+    ACSet one = g.graph(1, {}, {}), none = g.graph(0, {}, {});
+    Rule rule = g.rule(one, none, none, g.map({}, {}), g.map({}, {}));
+    ACSet path = g.graph(3, {1, 2}, {2, 3});
+    auto m = g.map({2}, {});
+    EXPECT_TRUE(find_matches(rule, path).empty()); // every vertex has an edge
+    EXPECT_TRUE(match_problem(rule, path, m).has_value());
+    rule.semantics = Semantics::SPO;
+    EXPECT_EQ(find_matches(rule, path).size(), 3u);
+    EXPECT_FALSE(match_problem(rule, path, m).has_value());
+    auto y = rewrite(rule, path, m);
+    ASSERT_TRUE(y.has_value()) << y.error();
+    EXPECT_TRUE(hom::is_isomorphic(g.graph(2, {}, {}), y->result));
+    ACSet in_place = path;
+    ASSERT_TRUE(rewrite_in_place(rule, in_place, m).has_value());
+    EXPECT_TRUE(hom::is_isomorphic(g.graph(2, {}, {}), in_place));
+}
+
+// SPO never deletes what the rule keeps: deleting vertex 1 of an edge 1 -> 2 that the rule keeps
+// is rejected with a reason.
+TEST(SPO, RejectsACascadeIntoAKeptPart) {
+    Graphs g;
+    ACSet arr = g.graph(2, {1}, {2});
+    Rule rule = g.rule(arr, g.graph(1, {}, {}), g.graph(1, {}, {}), g.map({2}, {}), g.map({1}, {}));
+    rule.semantics = Semantics::SPO;
+    // K keeps vertex 2 only, so the edge (in L, not in K) is deleted with vertex 1: fine.
+    ACSet x = g.graph(2, {1, 1}, {2, 2}); // a second edge 1 -> 2 dangles and is deleted too
+    auto matches = find_matches(rule, x);
+    ASSERT_EQ(matches.size(), 2u);
+    auto y = rewrite(rule, x, matches[0]);
+    ASSERT_TRUE(y.has_value()) << y.error();
+    EXPECT_TRUE(hom::is_isomorphic(g.graph(1, {}, {}), y->result));
+    // A rule deleting vertex a but keeping an edge a -> b whose src K leaves unset (a partial
+    // state) and R does not redirect: the cascade would delete the kept edge, so no match.
+    ACSet k(g.s);
+    Part kb = k.add_part(g.v);
+    k.set_subpart(g.tgt, k.add_part(g.e), kb);
+    Rule bad = g.rule(arr, k, k, g.map({2}, {1}), g.map({1}, {1}));
+    bad.semantics = Semantics::SPO;
+    auto m = g.map({1, 2}, {1});
+    auto problem = match_problem(bad, x, m);
+    ASSERT_TRUE(problem.has_value());
+    EXPECT_NE(problem->find("which the rule keeps"), std::string::npos) << *problem;
+    EXPECT_TRUE(find_matches(bad, x).empty());
+}
+
+} // namespace
+} // namespace catplan::rewrite

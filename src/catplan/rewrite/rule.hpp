@@ -94,8 +94,15 @@ struct Parameter {
     Part part;
 };
 
+/// How a rule treats parts of X that refer to a part it deletes. DPO: the match is rejected (the
+/// dangling condition). SPO (single pushout, reference §4.5): they are deleted too, and so on
+/// transitively (dangling edges are removed); a match whose cascade would reach a kept part is
+/// still rejected, since the rule says that part stays.
+enum class Semantics : std::uint8_t { DPO, SPO };
+
 struct Rule {
     std::string name;
+    Semantics semantics = Semantics::DPO;
     ACSet L, K, R;
     ACSetMorphism l; // K -> L, monic
     ACSetMorphism r; // K -> R
