@@ -670,12 +670,17 @@ public:
         supporter_.assign(task_.num_props(), UINT32_MAX);
         unsat_.resize(actions.size());
         sum_.assign(actions.size(), 0);
-        using Item = std::pair<int, std::uint32_t>;
-        std::priority_queue<Item, std::vector<Item>, std::greater<>> queue;
+        // A binary heap in a member vector, so evaluations reuse its storage.
+        auto& queue = queue_;
+        queue.clear();
+        auto push = [&](int c, std::uint32_t p) {
+            queue.push_back({c, p});
+            std::push_heap(queue.begin(), queue.end(), std::greater<>());
+        };
         for (std::uint32_t p = 0; p < truth_.size(); ++p) {
             if (truth_[p]) {
                 cost_[p] = 0;
-                queue.push({0, p});
+                push(0, p);
             }
         }
         auto fire = [&](std::uint32_t a) {
@@ -684,7 +689,7 @@ public:
                 if (c < cost_[q]) {
                     cost_[q] = c;
                     supporter_[q] = a;
-                    queue.push({c, q});
+                    push(c, q);
                 }
             }
         };
@@ -695,8 +700,9 @@ public:
             }
         }
         while (!queue.empty()) {
-            auto [c, p] = queue.top();
-            queue.pop();
+            std::pop_heap(queue.begin(), queue.end(), std::greater<>());
+            auto [c, p] = queue.back();
+            queue.pop_back();
             if (c > cost_[p]) {
                 continue;
             }
@@ -763,6 +769,7 @@ private:
     std::vector<int> cost_, sum_;
     std::vector<std::uint32_t> supporter_, unsat_;
     std::vector<bool> in_plan_, marked_;
+    std::vector<std::pair<int, std::uint32_t>> queue_;
 };
 
 } // namespace

@@ -25,6 +25,11 @@ struct Shape {
     std::vector<std::uint32_t> unset_in_l; // per hom: L parts whose value is unset
     std::vector<std::vector<std::uint32_t>> l_incident; // per hom, per L part: |L.incident(h, p)|
     bool r_monic = true;
+    /// Whether, for a monic match, the pruning in find_matches already implies the dangling
+    /// condition: no hom of L is unset on any part (the pruning allows those), so the only X parts
+    /// referring to a deleted part are images of L parts, which a well-formed l deletes too or
+    /// keeps with a hom that L and K agree on.
+    bool dangling_by_counts = true;
 
     bool deleted(ObId o, Part p) const { return k_of_l[o.index()][p] == kNoPart; }
 
@@ -65,6 +70,14 @@ Shape::Shape(const Rule& r) : rule(r) {
             }
         }
         unset_in_l.push_back(unset);
+        if (unset > 0) {
+            dangling_by_counts = false;
+        }
+        for (Part k = 0; k < r.K.num_parts(dom); ++k) {
+            if (r.K.subpart(f, k) == kNoPart && r.L.subpart(f, r.l(dom, k)) != kNoPart) {
+                dangling_by_counts = false; // a kept part's hom K leaves unset: check it fully
+            }
+        }
         l_incident.push_back(std::move(counts));
     }
 }
@@ -537,8 +550,15 @@ std::vector<ACSetMorphism> find_matches(const Rule& rule, const ACSet& x,
         };
     }
     std::vector<ACSetMorphism> matches;
+    // Monic DPO matches cannot fail identification, and the pruning above decides dangling when
+    // dangling_by_counts; then only application conditions remain (this saves the planner the
+    // per-match maps of the full checks).
+    bool only_conditions =
+        options.monic && rule.semantics == Semantics::DPO && shape.dangling_by_counts;
     auto result = hom::for_each_homomorphism(rule.L, x, opt, [&](const ACSetMorphism& m) {
-        if (!validity_problem(shape, x, m)) {
+        bool valid = only_conditions ? !condition_problem(rule, x, m).has_value()
+                                     : !validity_problem(shape, x, m).has_value();
+        if (valid) {
             matches.push_back(m);
         }
         return options.max_results == 0 || matches.size() < options.max_results;
