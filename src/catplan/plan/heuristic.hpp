@@ -2,12 +2,16 @@
 // Heuristics for the planner: estimates of the number of steps from a state to the goal.
 //
 // The abstraction (computed once per problem from the rules' L and R and the goal):
-//   - An *entity object* is one no rule creates, deletes or merges (every part of it in L and R
-//     comes from K, injectively): Block in the blocks worlds. Its parts are the same in every
-//     reachable state and keep their ids (rewriting never moves a part of an object it does not
-//     delete from), so a part id names the same entity in every state.
-//   - A *fact* is a part of any other object (a predicate object: On, IsClear, Gripper) seen as its
-//     tuple of hom values into entities and concrete attribute values; or a hom value between two
+//   - Entities are decided per part. An *entity object* is one no rule creates, deletes or merges
+//     (every part of it in L and R comes from K, injectively): Block in the STRIPS blocks world;
+//     its parts keep their ids in every reachable state. In another object (Block in the paper's
+//     domain, where a marker block is deleted and recreated), an initial part is an entity when
+//     it is uniquely named and no rule can ever delete it: every deleted L part of its object has
+//     a preimage under some hom that no rule makes point into a kept part, and the initial part
+//     has none (so it never will). Such entities are followed by name, since pop-and-swap
+//     deletions move ids. A rule's slots are its kept L parts of objects with entities.
+//   - A *fact* is any other part (a predicate object's: On, IsClear, Empty; the marker block)
+//     seen as its tuple of hom values into entities and concrete attribute values; or a hom value between two
 //     entities; or a concrete attribute value of an entity. Hom values into non-entity parts and
 //     unknown values are dropped (wildcards).
 //   - A precondition or goal fact with wildcards is satisfied by any fact that agrees on its other
@@ -15,8 +19,9 @@
 //   - Each rule is grounded by giving its L entity parts distinct entities (facts that no rule adds
 //     are checked against the initial state during grounding); a ground action needs the facts of L
 //     and adds the facts of R, at cost 1. Deletions are ignored (delete relaxation).
-//   - Goal entities are identified with the initial state's entities by name; a goal entity without
-//     a name (or with a name not in the initial state) is a wildcard.
+//   - Goal entities are identified with the initial state's entities by monic morphisms of the
+//     goal's entity parts (names bound); when several exist (two purple blocks), each gives a goal
+//     and h is the least over them (up to 24; beyond, unnamed goal entities are wildcards).
 //
 // Heuristics:
 //   blind      0 everywhere (A* becomes uniform-cost search).
