@@ -11,9 +11,9 @@
 //     has none (so it never will). Such entities are followed by name, since pop-and-swap
 //     deletions move ids. A rule's slots are its kept L parts of objects with entities.
 //   - A *fact* is any other part (a predicate object's: On, IsClear, Empty; the marker block)
-//     seen as its tuple of hom values into entities and concrete attribute values; or a hom value between two
-//     entities; or a concrete attribute value of an entity. Hom values into non-entity parts and
-//     unknown values are dropped (wildcards).
+//     seen as its tuple of hom values into entities and concrete attribute values; or a hom value
+//     between two entities; or a concrete attribute value of an entity. Hom values into non-entity
+//     parts and unknown values are dropped (wildcards).
 //   - A precondition or goal fact with wildcards is satisfied by any fact that agrees on its other
 //     positions (each fact is projected onto every wildcard pattern in use).
 //   - Each rule is grounded by giving its L entity parts distinct entities (facts that no rule adds
