@@ -213,6 +213,9 @@ int cmd_dot(const std::string& file, const std::string& name, bool left_to_right
     if (d->kind == lang::DeclKind::Instance) {
         return emit(dot::state_to_dot(*d->instance, d->name, options), output, out, err);
     }
+    if (d->kind == lang::DeclKind::Map) {
+        return emit(dot::map_to_dot(*d->map, d->name, options), output, out, err);
+    }
     error(err, fmt::format("'{}' has no picture: name a schema, an instance or a rule", name));
     return kBadInput;
 }
@@ -459,9 +462,13 @@ int run(int argc, char** argv, std::ostream& out, std::ostream& err) {
     std::string dot_file, dot_name, dot_output;
     bool dot_lr = false;
     auto* dot_cmd = app.add_subcommand(
-        "dot", "Write Graphviz DOT for a schema, an instance or a rule (render with `dot -Tsvg`)");
+        "dot",
+        "Write Graphviz DOT for a schema, an instance, a rule or an ontology map (render with "
+        "`dot -Tsvg`)");
     dot_cmd->add_option("FILE", dot_file)->required();
-    dot_cmd->add_option("NAME", dot_name, "a schema, an instance, or a rule (also one of a domain)")
+    dot_cmd
+        ->add_option("NAME", dot_name,
+                     "a schema, an instance, a rule (also one of a domain) or a map")
         ->required();
     dot_cmd->add_flag("--lr", dot_lr, "lay schemas and states out left to right");
     dot_cmd->add_option("-o,--output", dot_output, "write to this file instead of stdout");
