@@ -30,6 +30,12 @@
 // leak small blocks on every layout; LeakSanitizer in our sanitizer builds would fail every
 // program that draws. Only leaks allocated inside those libraries are suppressed.
 extern "C" const char* __lsan_default_suppressions();
+extern "C" const char* __lsan_default_options();
+
+// Without this, every run that draws ends with LeakSanitizer's table of suppressed leaks.
+extern "C" const char* __lsan_default_options() {
+    return "print_suppressions=0";
+}
 
 extern "C" const char* __lsan_default_suppressions() {
     return "leak:libgvc.so\nleak:libcgraph.so\nleak:libgvplugin_\nleak:libfontconfig.so\n"
