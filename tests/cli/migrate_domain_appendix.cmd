@@ -1,1 +1,1 @@
-migrate-domain examples/colorblocks_to_kitchen/appendix_map.cp --map ColorToKitchen Blocksworld
+migrate-domain examples/colorblocks_to_kitchen/appendix_map.cp --map ColorToKitchen --domain Blocksworld

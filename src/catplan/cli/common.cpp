@@ -108,12 +108,18 @@ plan::ProblemPtr load_problem(Session& s, const std::string& file, const std::st
     if (!m) {
         return nullptr;
     }
-    const auto* p = find_declaration(*m, file, problem_name, lang::DeclKind::Problem, err);
+    return find_problem(*m, file, domain_name, problem_name, err);
+}
+
+plan::ProblemPtr find_problem(const lang::Module& m, const std::string& file,
+                              const std::string& domain_name, const std::string& problem_name,
+                              std::ostream& err) {
+    const auto* p = find_declaration(m, file, problem_name, lang::DeclKind::Problem, err);
     if (p == nullptr) {
         return nullptr;
     }
     if (!domain_name.empty()) {
-        const auto* d = find_declaration(*m, file, domain_name, lang::DeclKind::Domain, err);
+        const auto* d = find_declaration(m, file, domain_name, lang::DeclKind::Domain, err);
         if (d == nullptr) {
             return nullptr;
         }

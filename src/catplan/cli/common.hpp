@@ -60,6 +60,12 @@ const rewrite::Rule* find_rule(const lang::Module& m, const std::string& name);
 plan::ProblemPtr load_problem(Session& s, const std::string& file, const std::string& domain_name,
                               const std::string& problem_name, std::ostream& err);
 
+/// The problem `problem_name` of a loaded module, checked against `domain_name` when it is not
+/// empty; nullptr with the error printed.
+plan::ProblemPtr find_problem(const lang::Module& m, const std::string& file,
+                              const std::string& domain_name, const std::string& problem_name,
+                              std::ostream& err);
+
 /// The subcommands and what runs each when it is the one parsed.
 class CommandTable {
 public:
@@ -75,9 +81,9 @@ private:
     std::vector<std::pair<CLI::App*, Run>> entries_;
 };
 
-/// Adds `migrate` (migrate_commands.cpp).
+/// Adds `migrate` and `migrate-domain` (migrate_commands.cpp).
 void add_migrate_commands(CLI::App& app, CommandTable& table);
-/// Adds `transfer` and `migrate-domain` (transfer_commands.cpp).
+/// Adds `transfer` (transfer_commands.cpp).
 void add_transfer_commands(CLI::App& app, CommandTable& table);
 /// Adds `report` (report_commands.cpp).
 void add_report_commands(CLI::App& app, CommandTable& table);

@@ -52,6 +52,19 @@ struct MigrateDomainArgs {
     std::string file, map, domain;
 };
 
+// Every line of text indented by n spaces.
+std::string indent(const std::string& text, std::size_t n) {
+    std::string out, pad(n, ' ');
+    std::size_t start = 0;
+    while (start < text.size()) {
+        std::size_t end = text.find('\n', start);
+        end = end == std::string::npos ? text.size() : end + 1;
+        out += pad + text.substr(start, end - start);
+        start = end;
+    }
+    return out;
+}
+
 int cmd_migrate_domain(const MigrateDomainArgs& a, std::ostream& out, std::ostream& err) {
     Session s;
     auto m = load(s, a.file, err);
@@ -79,6 +92,10 @@ int cmd_migrate_domain(const MigrateDomainArgs& a, std::ostream& out, std::ostre
             continue;
         }
         out << "  " << lang::summarize_rule(*migrated) << "\n";
+        for (auto [label, state] : {std::pair{"Pre", &migrated->L}, std::pair{"Keep", &migrated->K},
+                                    std::pair{"Eff", &migrated->R}}) {
+            out << fmt::format("    {}:\n{}", label, indent(acset::to_tables(*state), 6));
+        }
     }
     return rc;
 }
@@ -106,7 +123,7 @@ void add_migrate_commands(CLI::App& app, CommandTable& table) {
                           "(exit 3 when one cannot be migrated)");
     domain_cmd->add_option("FILE", domain_args->file, "language file (.cp)")->required();
     domain_cmd->add_option("--map", domain_args->map, "a map declared in FILE")->required();
-    domain_cmd->add_option("DOMAIN", domain_args->domain, "a domain on the map's source schema")
+    domain_cmd->add_option("--domain", domain_args->domain, "a domain on the map's source schema")
         ->required();
     table.add(domain_cmd, [domain_args](std::ostream& o, std::ostream& e) {
         return cmd_migrate_domain(*domain_args, o, e);

@@ -637,4 +637,20 @@ Result<ACSetMorphism> migrate_match(const SchemaMap& f, const rewrite::Rule& rul
     return migrate(f, m, rule.L, x);
 }
 
+std::optional<TupleOrigins> tuple_origins(const SchemaMap& f, const MigratedState& x, ObId c) {
+    const Query& q = f.query(c);
+    auto n = first_object_node(q);
+    if (!n) {
+        return std::nullopt;
+    }
+    QueryElement el = q.locate_node(*n);
+    const Tuples& tu = *x.tuples[c.index()];
+    TupleOrigins out{el.ob, {}};
+    out.parts.reserve(tu.count);
+    for (std::size_t i = 0; i < tu.count; ++i) {
+        out.parts.push_back(tu.part(i, el.ob, el.part));
+    }
+    return out;
+}
+
 } // namespace catplan::migrate

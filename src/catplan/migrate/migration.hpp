@@ -57,6 +57,16 @@ public:
 /// Δ_F(X): the state on F's target schema described above. F must be finished and ok.
 MigratedState migrate_state(const SchemaMap& f, const ACSet& x);
 
+/// Where each part of Δ_F(X) at target object c starts: the source object of the query's first
+/// object variable and, per tuple, the part of X assigned to it (nullopt when the query has no
+/// object variable). This is how names flow (a tuple is named after that part).
+struct TupleOrigins {
+    ObId ob;
+    std::vector<Part> parts;
+};
+
+std::optional<TupleOrigins> tuple_origins(const SchemaMap& f, const MigratedState& x, ObId c);
+
 /// Δ_F(X) without the bookkeeping.
 ACSet migrate(const SchemaMap& f, const ACSet& x);
 

@@ -61,7 +61,8 @@ Renaming names_by_type(const ACSet& y) {
         ObId ob(o);
         for (Part p = 0; p < y.num_parts(ob); ++p) {
             std::string name(y.part_name(ob, p));
-            if (name.empty()) {
+            // Generated names (#7 for an unnamed part, block@3 for a created one) stay.
+            if (name.empty() || name[0] == '#' || name.find('@') != std::string::npos) {
                 continue;
             }
             Holder h{ob, p, is_a_homs(y, ob, p, name)};

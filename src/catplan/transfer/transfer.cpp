@@ -5,8 +5,11 @@
 #include "catplan/rewrite/dpo.hpp"
 #include "catplan/transfer/rename.hpp"
 
+#include <cctype>
 #include <chrono>
 #include <fmt/format.h>
+#include <functional>
+#include <map>
 #include <sys/resource.h>
 #include <unordered_map>
 
@@ -19,75 +22,175 @@ double ms_since(Clock::time_point t0) {
     return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
 }
 
-// Per object of a state: name -> the part with that name, or kNoPart when several share it.
-class NameIndex {
+std::string lowercase(std::string_view text) {
+    std::string out(text);
+    for (auto& c : out) {
+        c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    }
+    return out;
+}
+
+// A state whose parts are named, with an index name -> part per object kept in step with every
+// rewrite (so a step costs what it touches, not the size of the state). A name shared by two
+// parts of an object maps to kNoPart (ambiguous).
+class NamedState {
 public:
-    explicit NameIndex(const ACSet& y) : by_ob_(y.schema().num_obs()) {
-        for (std::uint32_t o = 0; o < by_ob_.size(); ++o) {
-            for (Part p = 0; p < y.num_parts(ObId(o)); ++p) {
-                std::string_view n = y.part_name(ObId(o), p);
-                if (n.empty()) {
-                    continue;
-                }
-                auto [it, fresh] = by_ob_[o].emplace(std::string(n), p);
-                if (!fresh) {
-                    it->second = kNoPart;
-                }
+    explicit NamedState(ACSet x) : x_(std::move(x)), index_(x_.schema().num_obs()) {
+        for (std::uint32_t o = 0; o < index_.size(); ++o) {
+            for (Part p = 0; p < x_.num_parts(ObId(o)); ++p) {
+                add(ObId(o), p);
             }
         }
     }
+
+    const ACSet& state() const { return x_; }
 
     /// The only part of ob with this name, or kNoPart.
     Part find(ObId ob, std::string_view name) const {
-        auto it = by_ob_[ob.index()].find(std::string(name));
-        return it == by_ob_[ob.index()].end() ? kNoPart : it->second;
+        auto it = index_[ob.index()].find(std::string(name));
+        return it == index_[ob.index()].end() ? kNoPart : it->second;
+    }
+
+    /// Applies rule at m in place, naming each created part with name_of(ob, part of R).
+    Result<ACSetMorphism> apply(const rewrite::Rule& rule, const ACSetMorphism& m,
+                                const std::function<std::string(ObId, Part)>& name_of) {
+        const auto& s = x_.schema();
+        // The parts to be deleted: matched parts of L outside l's image.
+        std::vector<std::vector<Part>> deleted(s.num_obs());
+        for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
+            std::vector<bool> kept(rule.L.num_parts(ObId(o)), false);
+            for (Part k : rule.l.components[o]) {
+                kept[k] = true;
+            }
+            for (Part p = 0; p < kept.size(); ++p) {
+                if (!kept[p]) {
+                    deleted[o].push_back(m.components[o][p]);
+                }
+            }
+        }
+        for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
+            for (Part p : deleted[o]) {
+                remove(ObId(o), p);
+            }
+        }
+        auto r_to_x = rewrite::rewrite_in_place(rule, x_, m);
+        if (!r_to_x) {
+            return r_to_x;
+        }
+        // Pop-and-swap moved parts into deleted slots only: re-index what sits there now.
+        for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
+            for (Part p : deleted[o]) {
+                if (p < x_.num_parts(ObId(o))) {
+                    add(ObId(o), p);
+                }
+            }
+        }
+        name_created(rule, *r_to_x, name_of);
+        return r_to_x;
+    }
+
+    /// A name for a new part of ob, starting from base, not used in ob yet.
+    std::string fresh_name(ObId ob, const std::string& base) {
+        auto& used = index_[ob.index()];
+        if (!used.count(base)) {
+            return base;
+        }
+        for (int k = 2;; ++k) {
+            std::string name = fmt::format("{}{}", base, k);
+            if (!used.count(name)) {
+                return name;
+            }
+        }
     }
 
 private:
-    std::vector<std::unordered_map<std::string, Part>> by_ob_;
+    void add(ObId ob, Part p) {
+        std::string_view n = x_.part_name(ob, p);
+        if (n.empty()) {
+            return;
+        }
+        auto [it, fresh] = index_[ob.index()].emplace(std::string(n), p);
+        if (!fresh && it->second != p) {
+            it->second = kNoPart;
+        }
+    }
+
+    void remove(ObId ob, Part p) {
+        auto& idx = index_[ob.index()];
+        auto it = idx.find(std::string(x_.part_name(ob, p)));
+        if (it != idx.end() && it->second == p) {
+            idx.erase(it);
+        }
+    }
+
+    void name_created(const rewrite::Rule& rule, const ACSetMorphism& r_to_x,
+                      const std::function<std::string(ObId, Part)>& name_of) {
+        const auto& s = x_.schema();
+        for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
+            std::vector<bool> kept(rule.R.num_parts(ObId(o)), false);
+            for (Part k : rule.r.components[o]) {
+                kept[k] = true;
+            }
+            for (Part q = 0; q < kept.size(); ++q) {
+                if (!kept[q]) {
+                    Part p = r_to_x.components[o][q];
+                    x_.set_part_name(ObId(o), p, name_of(ObId(o), q));
+                    add(ObId(o), p);
+                }
+            }
+        }
+    }
+
+    ACSet x_;
+    std::vector<std::unordered_map<std::string, Part>> index_;
 };
 
-// The source object and part of L that the tuple at part p of Δ_F(L) (target object c) starts
-// at, found through the tuple's name; nullopt when the tuple has no name.
-std::optional<std::pair<ObId, Part>> tuple_origin(const SchemaMap& f, const ACSet& l,
-                                                  const ACSet& fl, ObId c, Part p) {
-    std::string_view name = fl.part_name(c, p);
-    if (name.empty()) {
-        return std::nullopt;
-    }
-    const auto& q = f.query(c);
-    for (std::size_t i = 0; i < q.nodes().size(); ++i) {
-        if (q.nodes()[i].is_value) {
-            continue;
+// Names every unnamed part after its label (#7), so that names can follow every part.
+ACSet named(const ACSet& x) {
+    ACSet out = x;
+    for (std::uint32_t o = 0; o < x.schema().num_obs(); ++o) {
+        for (Part p = 0; p < x.num_parts(ObId(o)); ++p) {
+            if (x.part_name(ObId(o), p).empty()) {
+                out.set_part_name(ObId(o), p, x.part_label(ObId(o), p));
+            }
         }
-        ObId ob = q.locate_node(i).ob;
-        if (auto part = l.find_part(ob, name)) {
-            return std::pair{ob, *part};
-        }
-        return std::nullopt;
     }
-    return std::nullopt;
+    return out;
 }
 
-// The target match's parts fixed by carrying the source match through part names.
-std::vector<hom::PartBinding> carried_bindings(const SchemaMap& f, const rewrite::Rule& rule,
-                                               const rewrite::Rule& target_rule,
-                                               const ACSetMorphism& m, const ACSet& x,
-                                               const NameIndex& y_names, const Renaming& renaming) {
+// A source action with its migration and the origins of the migrated L's and R's tuples.
+struct ActionPair {
+    const rewrite::Rule* source = nullptr;
+    const rewrite::Rule* target = nullptr;
+    std::vector<std::optional<migrate::TupleOrigins>> l_origins, r_origins; // by target object
+};
+
+std::vector<std::optional<migrate::TupleOrigins>> origins_of(const SchemaMap& f, const ACSet& x) {
+    auto ms = migrate::migrate_state(f, x);
+    std::vector<std::optional<migrate::TupleOrigins>> out;
+    for (std::uint32_t c = 0; c < f.target()->num_obs(); ++c) {
+        out.push_back(migrate::tuple_origins(f, ms, ObId(c)));
+    }
+    return out;
+}
+
+// The target match's parts fixed by carrying the source match m through part names: each part
+// of Δ_F(L) starts at a part q of L, m(q) is a named part of X, and the part of Y with that
+// name (when it is the only one) is where the target match sends it.
+std::vector<hom::PartBinding> carried_bindings(const ActionPair& a, const ACSetMorphism& m,
+                                               const NamedState& x, const NamedState& y,
+                                               const Renaming& renaming) {
     std::vector<hom::PartBinding> out;
-    const ACSet& fl = target_rule.L;
+    const ACSet& fl = a.target->L;
     for (std::uint32_t c = 0; c < fl.schema().num_obs(); ++c) {
-        for (Part p = 0; p < fl.num_parts(ObId(c)); ++p) {
-            auto origin = tuple_origin(f, rule.L, fl, ObId(c), p);
-            if (!origin) {
-                continue;
-            }
-            Part in_x = m.components[origin->first.index()][origin->second];
-            std::string_view name = x.part_name(origin->first, in_x);
-            if (name.empty()) {
-                continue;
-            }
-            Part in_y = y_names.find(ObId(c), renamed(renaming, name));
+        const auto& origin = a.l_origins[c];
+        if (!origin) {
+            continue;
+        }
+        for (Part p = 0; p < fl.num_parts(ObId(c)) && p < origin->parts.size(); ++p) {
+            Part in_x = m.components[origin->ob.index()][origin->parts[p]];
+            std::string_view name = x.state().part_name(origin->ob, in_x);
+            Part in_y = name.empty() ? kNoPart : y.find(ObId(c), renamed(renaming, name));
             if (in_y != kNoPart) {
                 out.push_back({ObId(c), p, in_y});
             }
@@ -143,57 +246,191 @@ std::string explain_no_match(const rewrite::Rule& rule, const ACSet& y,
                        missing ? *missing : std::string("the precondition does not embed"));
 }
 
-struct Context {
-    const SchemaMap& f;
-    const plan::Validation& source;
-    const plan::Plan& plan;
-    const plan::Domain& source_domain;
-    TransferResult& out;
-    Renaming renaming; // source names -> target names (empty unless renaming by type)
-};
+// The source match of a step: its arguments bound by name through the index, completed
+// uniquely; plan::resolve_step explains any failure.
+Result<ACSetMorphism> source_match(const rewrite::Rule& rule, const NamedState& x,
+                                   const plan::Step& step) {
+    std::vector<hom::PartBinding> bindings;
+    bool all_bound = step.args.size() == rule.parameters.size();
+    for (std::size_t i = 0; all_bound && i < step.args.size(); ++i) {
+        const auto& param = rule.parameters[i];
+        Part p = x.find(param.ob, step.args[i]);
+        all_bound = p != kNoPart;
+        bindings.push_back({param.ob, param.part, p});
+    }
+    if (all_bound) {
+        rewrite::MatchOptions opt;
+        opt.initial = bindings;
+        opt.max_results = 2;
+        auto matches = rewrite::find_matches(rule, x.state(), opt);
+        if (matches.size() == 1) {
+            return std::move(matches[0]);
+        }
+    }
+    return plan::resolve_step(rule, x.state(), step);
+}
 
-// Applies the migrated action of step i to y; false (with failed_step set) when it cannot.
-bool transfer_step(Context& cx, std::size_t i, const ACSet& x, ACSet& y) {
-    const plan::Step& s = cx.plan.steps[i];
-    const rewrite::Rule* rule = cx.source_domain.find_rule(s.action);
-    const rewrite::Rule* target_rule = cx.out.target_domain.domain->find_rule(s.action);
-    auto fail_at = [&](std::string why) {
-        cx.out.failed_step = FailedStep{i, why};
-        cx.out.reason = fmt::format("step {} {}: {}", i + 1, s.to_string(), why);
+class Transfer {
+public:
+    Transfer(const SchemaMap& f, const plan::Problem& problem, const plan::Plan& plan,
+             const TransferOptions& options, TransferResult& out)
+        : f_(f), problem_(problem), plan_(plan), options_(options), out_(out) {}
+
+    void run() {
+        auto t0 = Clock::now();
+        ACSet x0 = named(*problem_.initial);
+        out_.target_domain = migrate_domain(f_, *problem_.domain);
+        ACSet y0 = migrate::migrate(f_, x0);
+        if (options_.rename_by_type) {
+            renaming_ = names_by_type(y0);
+            rename_parts(y0, renaming_);
+        }
+        out_.target_initial = std::make_shared<const ACSet>(y0);
+        out_.target_goal = std::make_shared<const ACSet>(migrate::migrate(f_, *problem_.goal));
+        out_.timings.migrate_ms = ms_since(t0);
+        x_.emplace(std::move(x0));
+        y_.emplace(std::move(y0));
+        keep_states();
+        t0 = Clock::now();
+        for (std::size_t i = 0; i < plan_.steps.size(); ++i) {
+            if (!step(i)) {
+                break;
+            }
+            keep_states();
+        }
+        out_.timings.apply_ms = ms_since(t0);
+        finish_source();
+        out_.final_state = y_->state();
+    }
+
+private:
+    void keep_states() {
+        if (options_.keep_states) {
+            out_.source_states.push_back(x_->state());
+            out_.target_states.push_back(y_->state());
+        }
+    }
+
+    const ActionPair* action(const std::string& name) {
+        auto it = actions_.find(name);
+        if (it != actions_.end()) {
+            return &it->second;
+        }
+        ActionPair a;
+        a.source = problem_.domain->find_rule(name);
+        a.target = out_.target_domain.domain->find_rule(name);
+        if (a.source && a.target) {
+            a.l_origins = origins_of(f_, a.source->L);
+            a.r_origins = origins_of(f_, a.source->R);
+        }
+        return &actions_.emplace(name, std::move(a)).first->second;
+    }
+
+    bool fail_at(std::size_t i, const std::string& why) {
+        out_.failed_step = FailedStep{i, why};
+        out_.reason = fmt::format("step {} {}: {}", i + 1, plan_.steps[i].to_string(), why);
         return false;
-    };
-    if (target_rule == nullptr) {
-        for (const auto& [name, why] : cx.out.target_domain.failures) {
-            if (name == s.action) {
-                return fail_at("the action does not migrate: " + why);
+    }
+
+    // Replays step i in the source and applies its migration in the target.
+    bool step(std::size_t i) {
+        const plan::Step& s = plan_.steps[i];
+        const ActionPair* a = action(s.action);
+        if (a->source == nullptr) {
+            source_failure(
+                i, fmt::format("no action '{}' in domain {}", s.action, problem_.domain->name));
+            return false;
+        }
+        auto m = source_match(*a->source, *x_, s);
+        if (!m) {
+            source_failure(i, m.error());
+            return false;
+        }
+        if (a->target == nullptr) {
+            return fail_at(i, "the action does not migrate: " + migration_failure(s.action));
+        }
+        auto bindings = carried_bindings(*a, *m, *x_, *y_, renaming_);
+        rewrite::MatchOptions opt;
+        opt.initial = bindings;
+        opt.max_results = 1;
+        auto matches = rewrite::find_matches(*a->target, y_->state(), opt);
+        if (matches.empty()) {
+            return fail_at(i, explain_no_match(*a->target, y_->state(), bindings));
+        }
+        StepTransfer st;
+        st.source = s;
+        st.target = step_of(*a->target, matches[0], y_->state());
+        st.source_bindings = plan::describe_match(*m, a->source->L, x_->state());
+        st.target_bindings = plan::describe_match(matches[0], a->target->L, y_->state());
+        st.lost_parameters = lost_parameters(*a->source, *a->target);
+        // A created part is named after its generator in the rule, or after its object and the
+        // step that created it (block@2).
+        auto r_to_x = x_->apply(*a->source, *m, [&](ObId ob, Part q) {
+            std::string base(a->source->R.part_name(ob, q));
+            if (base.empty()) {
+                base = fmt::format("{}@{}", lowercase(problem_.domain->schema->ob(ob).name), i + 1);
+            }
+            return x_->fresh_name(ob, base);
+        });
+        CATPLAN_ASSERT(r_to_x, "a valid source match failed to apply");
+        // A part created in the target is named after the source part its tuple starts at.
+        auto applied = y_->apply(*a->target, matches[0], [&](ObId c, Part q) {
+            const auto& origin = a->r_origins[c.index()];
+            if (!origin || q >= origin->parts.size()) {
+                return y_->fresh_name(c, lowercase(f_.target()->ob(c).name));
+            }
+            Part in_x = r_to_x->components[origin->ob.index()][origin->parts[q]];
+            return renamed(renaming_, x_->state().part_name(origin->ob, in_x));
+        });
+        if (!applied) {
+            return fail_at(i, applied.error());
+        }
+        st.source_match = std::move(*m);
+        st.target_match = std::move(matches[0]);
+        out_.steps.push_back(std::move(st));
+        return true;
+    }
+
+    std::string migration_failure(const std::string& action) const {
+        for (const auto& [name, why] : out_.target_domain.failures) {
+            if (name == action) {
+                return why;
             }
         }
-        return fail_at("the action does not migrate");
+        return "unknown reason";
     }
-    const ACSetMorphism& m = cx.source.matches[i];
-    auto bindings = carried_bindings(cx.f, *rule, *target_rule, m, x, NameIndex(y), cx.renaming);
-    rewrite::MatchOptions opt;
-    opt.initial = bindings;
-    opt.max_results = 1;
-    auto matches = rewrite::find_matches(*target_rule, y, opt);
-    if (matches.empty()) {
-        return fail_at(explain_no_match(*target_rule, y, bindings));
+
+    void source_failure(std::size_t i, const std::string& why) {
+        out_.source_valid = false;
+        out_.source_reason = fmt::format("step {} {}: {}", i + 1, plan_.steps[i].to_string(), why);
+        out_.failed_step = FailedStep{i, "the source plan fails here: " + why};
+        out_.reason = "the source plan is invalid: " + out_.source_reason;
     }
-    StepTransfer st;
-    st.source = s;
-    st.target = step_of(*target_rule, matches[0], y);
-    st.source_match = m;
-    st.source_bindings = plan::describe_match(m, rule->L, x);
-    st.target_bindings = plan::describe_match(matches[0], target_rule->L, y);
-    st.lost_parameters = lost_parameters(*rule, *target_rule);
-    auto applied = rewrite::rewrite_in_place(*target_rule, y, matches[0]);
-    if (!applied) {
-        return fail_at(applied.error());
+
+    void finish_source() {
+        if (out_.failed_step) {
+            if (out_.source_reason.empty()) {
+                // The target failed first; the source plan is judged on its own.
+                out_.source_valid = plan::validate_plan(problem_, plan_).valid;
+            }
+            return;
+        }
+        auto g = plan::embed_goal(*problem_.goal, x_->state());
+        out_.source_valid = static_cast<bool>(g);
+        if (!g) {
+            out_.source_reason = "goal not reached: " + g.error();
+        }
     }
-    st.target_match = std::move(matches[0]);
-    cx.out.steps.push_back(std::move(st));
-    return true;
-}
+
+    const SchemaMap& f_;
+    const plan::Problem& problem_;
+    const plan::Plan& plan_;
+    const TransferOptions& options_;
+    TransferResult& out_;
+    Renaming renaming_;
+    std::optional<NamedState> x_, y_;
+    std::map<std::string, ActionPair, std::less<>> actions_;
+};
 
 void check_goal(TransferResult& out, const ACSet& y) {
     auto t0 = Clock::now();
@@ -206,9 +443,11 @@ void check_goal(TransferResult& out, const ACSet& y) {
         out.goal = goal_satisfaction(*out.target_goal, y);
     }
     if (!out.failed_step) {
-        out.valid = out.goal_reached;
+        out.valid = out.goal_reached && out.source_valid;
         if (!out.goal_reached) {
             out.reason = "goal not reached: " + embedding.error();
+        } else if (!out.source_valid) {
+            out.reason = "the source plan is invalid: " + out.source_reason;
         }
     }
     out.timings.validate_ms = ms_since(t0);
@@ -241,63 +480,12 @@ MigratedDomain migrate_domain(const SchemaMap& f, const plan::Domain& d, std::st
 TransferResult transfer_plan(const SchemaMap& f, const plan::Problem& problem,
                              const plan::Plan& plan, const TransferOptions& options) {
     CATPLAN_ASSERT(f.ok(), "transfer along an unfinished or invalid map");
-    auto t_total = Clock::now();
+    auto t0 = Clock::now();
     TransferResult out;
     out.migration = f.is_delta() ? MigrationKind::Delta : MigrationKind::Conjunctive;
-
-    auto t0 = Clock::now();
-    plan::ValidateOptions vopt;
-    vopt.keep_states = true;
-    plan::Validation source = plan::validate_plan(problem, plan, vopt);
-    out.source_valid = source.valid;
-    out.source_reason = source.reason;
-    out.timings.replay_ms = ms_since(t0);
-
-    t0 = Clock::now();
-    out.target_domain = migrate_domain(f, *problem.domain);
-    ACSet y0 = migrate::migrate(f, *problem.initial);
-    Renaming renaming;
-    if (options.rename_by_type) {
-        renaming = names_by_type(y0);
-        rename_parts(y0, renaming);
-    }
-    out.target_initial = std::make_shared<const ACSet>(std::move(y0));
-    out.target_goal = std::make_shared<const ACSet>(migrate::migrate(f, *problem.goal));
-    out.timings.migrate_ms = ms_since(t0);
-
-    t0 = Clock::now();
-    ACSet y = *out.target_initial;
-    if (options.keep_states) {
-        out.target_states.push_back(y);
-    }
-    Context cx{f, source, plan, *problem.domain, out, std::move(renaming)};
-    // Only the steps the source plan could take are transferred.
-    std::size_t n = source.matches.size();
-    for (std::size_t i = 0; i < n; ++i) {
-        if (!transfer_step(cx, i, source.states[i], y)) {
-            break;
-        }
-        if (options.keep_states) {
-            out.target_states.push_back(y);
-        }
-    }
-    if (!out.failed_step && !source.valid && source.failed_step) {
-        out.failed_step = FailedStep{*source.failed_step, "the source plan fails here"};
-        out.reason = "the source plan is invalid: " + source.reason;
-    }
-    out.timings.apply_ms = ms_since(t0);
-
-    check_goal(out, y);
-    if (!source.valid && out.reason.empty()) {
-        out.reason = "the source plan is invalid: " + source.reason;
-        out.valid = false;
-    }
-    if (options.keep_states) {
-        out.source_states = std::move(source.states);
-        out.source_states.resize(out.steps.size() + 1, ACSet(problem.initial->schema_ptr()));
-    }
-    out.final_state = std::move(y);
-    out.timings.total_ms = ms_since(t_total);
+    Transfer(f, problem, plan, options, out).run();
+    check_goal(out, *out.final_state);
+    out.timings.total_ms = ms_since(t0);
     return out;
 }
 

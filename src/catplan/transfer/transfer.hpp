@@ -3,16 +3,19 @@
 //
 // Given an ontology map F : D' -> D (migrate::SchemaMap), a source problem (I, G) on D with its
 // domain, and a source plan:
-//   1. the source plan is replayed on I (plan::validate_plan), giving states X_i and matches m_i;
-//   2. every action of the source domain is migrated, a'_i = Δ_F(a_i) (the target domain's
-//      generated actions, migrate_domain);
-//   3. the migrated actions are applied to Y_0 = Δ_F(I) in turn. The match of step i is m_i carried
-//      through part names: each part of Δ_F(L) is named after the part of L its tuple starts at;
-//      m_i sends that part to a named part of X_{i-1}, and the target match binds the part of
-//      Y_{i-1} with that name (when exactly one part of that object has it). The rest of the
-//      match is completed by search with the gluing conditions; when no match exists the
-//      transfer stops at that step and says which part of the precondition is missing.
-//   4. the goal is checked with a monic morphism Δ_F(G) -> Y_n, and goal satisfaction (the
+//   1. every action of the source domain is migrated, a'_i = Δ_F(a_i) (the target domain's
+//      generated actions, migrate_domain), and Y_0 = Δ_F(I);
+//   2. the source plan is replayed on I, giving states X_i and matches m_i, and in lockstep the
+//      migrated actions are applied to Y_{i-1}. Names carry the matches: every part of X has a
+//      name (an unnamed part of I is named after its label, #7; a created part after its
+//      generator in the rule, made unique: null, null2), and a part of Y is named after the part
+//      of X its tuple starts at. The match of step i in Y_{i-1} sends each part of Δ_F(L),
+//      whose tuple starts at a part q of L, to the part of Y_{i-1} named like m_i(q) (when it is
+//      the only one); the search completes the rest and checks the gluing conditions. When no
+//      match exists the transfer stops at that step and says which part of the precondition
+//      is missing. Name indexes are kept in step with each rewrite, so a step costs what it
+//      touches.
+//   3. the goal is checked with a monic morphism Δ_F(G) -> Y_n, and goal satisfaction (the
 //      paper's Metric 1, goal.hpp) is computed.
 // For a delta map, Δ_F preserves pushouts, so the transferred plan is valid by construction
 // (paper Appendix A); it is still checked.
@@ -84,9 +87,8 @@ struct FailedStep {
 
 /// Wall-clock times of the phases, in milliseconds.
 struct Timings {
-    double replay_ms = 0;   ///< replaying the source plan
     double migrate_ms = 0;  ///< migrating the domain, the initial state and the goal
-    double apply_ms = 0;    ///< matching and applying the migrated actions
+    double apply_ms = 0;    ///< replaying the source plan and applying the migrated actions
     double validate_ms = 0; ///< the goal embedding and goal satisfaction
     double total_ms = 0;
 };
