@@ -1,8 +1,7 @@
 #include "catplan/cli/common.hpp"
 
-#include "catplan/cli/commands.hpp"
-
 #include "catplan/base/output_file.hpp"
+#include "catplan/cli/commands.hpp"
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>

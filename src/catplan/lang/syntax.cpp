@@ -611,11 +611,11 @@ private:
         ++nest_;
         const Token& name = peek();
         std::size_t colon = pos_ + 1;
-        while (tokens_[colon].kind == TokenKind::Newline) {
+        while (colon < tokens_.size() && tokens_[colon].kind == TokenKind::Newline) {
             ++colon;
         }
-        if (name.kind != TokenKind::Ident || tokens_[colon].kind != TokenKind::Punct ||
-            tokens_[colon].text != ":") {
+        if (name.kind != TokenKind::Ident || colon >= tokens_.size() ||
+            tokens_[colon].kind != TokenKind::Punct || tokens_[colon].text != ":") {
             --nest_;
             return std::nullopt;
         }
