@@ -1,7 +1,7 @@
 #!/bin/sh
 # The demo: the paper's case study in ColorBlocksworld (the appendix form). It loads the schema,
 # the initial state of the paper's Table 1 and the goal tower, then replays and validates the
-# paper's plan with DPO rewriting. (Plan transfer into Kitchenworld comes with the transfer work.)
+# paper's plan with DPO rewriting. Then the plan is transferred into Kitchenworld.
 set -eu
 CATPLAN=${1:-build/release/src/catplan/cli/catplan}
 EX=examples/colorblocksworld/colorblocksworld.cp
