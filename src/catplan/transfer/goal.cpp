@@ -1,10 +1,12 @@
 #include "catplan/transfer/goal.hpp"
 
 #include "catplan/base/assert.hpp"
+#include "catplan/plan/validate.hpp"
 
 #include <algorithm>
 #include <fmt/format.h>
-#include <numeric>
+#include <queue>
+#include <tuple>
 
 namespace catplan::transfer {
 namespace {
@@ -35,6 +37,47 @@ struct Goal {
     std::vector<Statement> statements;
 };
 
+// The words for a goal part: its name, or for an unnamed part the terms of named parts that
+// reach it (`plateIsReceptacle(plate)`), then its label (`#3`).
+std::vector<std::vector<std::vector<std::string>>> part_words(const ACSet& g) {
+    const auto& s = g.schema();
+    std::vector<std::vector<std::vector<std::string>>> words(s.num_obs());
+    for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
+        words[o].resize(g.num_parts(ObId(o)));
+    }
+    for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
+        for (Part p = 0; p < g.num_parts(ObId(o)); ++p) {
+            std::string_view name = g.part_name(ObId(o), p);
+            if (name.empty()) {
+                continue;
+            }
+            for (HomId f : s.homs_from(ObId(o))) {
+                Part q = g.subpart(f, p);
+                ObId d = s.hom(f).codom;
+                if (q != kNoPart && g.part_name(d, q).empty()) {
+                    words[d.index()][q].push_back(fmt::format("{}({})", s.hom(f).name, name));
+                }
+            }
+        }
+    }
+    for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
+        for (Part p = 0; p < g.num_parts(ObId(o)); ++p) {
+            words[o][p].push_back(g.part_label(ObId(o), p));
+        }
+    }
+    return words;
+}
+
+// The first word for a part other than `avoid` (the term a statement is about already).
+const std::string& word_for(const std::vector<std::string>& words, std::string_view avoid = {}) {
+    for (const auto& w : words) {
+        if (w != avoid) {
+            return w;
+        }
+    }
+    return words.back();
+}
+
 Goal read_goal(const ACSet& g) {
     const auto& s = g.schema();
     Goal out;
@@ -45,9 +88,10 @@ Goal read_goal(const ACSet& g) {
             out.parts.push_back({ObId(o), p});
         }
     }
+    const auto words = part_words(g);
     for (std::size_t i = 0; i < out.parts.size(); ++i) {
         auto [ob, p] = out.parts[i];
-        std::string label = g.part_label(ob, p);
+        const std::string& label = word_for(words[ob.index()][p]);
         Statement st;
         st.part = i;
         st.text = fmt::format("{} {}", s.ob(ob).name, label);
@@ -62,8 +106,9 @@ Goal read_goal(const ACSet& g) {
             h.part = i;
             h.hom = f;
             h.other = out.index[s.hom(f).codom.index()][q];
+            std::string term = fmt::format("{}({})", s.hom(f).name, label);
             h.text =
-                fmt::format("{}({}) == {}", s.hom(f).name, label, g.part_label(s.hom(f).codom, q));
+                fmt::format("{} == {}", term, word_for(words[s.hom(f).codom.index()][q], term));
             out.statements.push_back(h);
         }
         for (AttrId a : s.attrs_from(ob)) {
@@ -116,20 +161,43 @@ private:
     static constexpr std::size_t kMaxCandidates = 64;
 
     void order_parts() {
-        // Parts with the most statements first, then those connected to parts already placed, so
-        // that hom statements are decided early and prune.
-        std::vector<std::size_t> weight(goal_.parts.size(), 0);
+        // Each next part is the one with the most hom statements linking it to the parts placed
+        // already (then the most statements), so that hom statements are decided early and
+        // prune, and a part reached by a hom finds its candidate at once.
+        const std::size_t n = goal_.parts.size();
+        std::vector<std::size_t> weight(n, 0), links(n, 0);
+        std::vector<std::vector<std::size_t>> neighbours(n);
         for (const auto& st : goal_.statements) {
             ++weight[st.part];
             if (st.kind == Statement::Kind::Hom) {
                 ++weight[st.other];
+                neighbours[st.part].push_back(st.other);
+                neighbours[st.other].push_back(st.part);
             }
         }
-        order_.resize(goal_.parts.size());
-        std::iota(order_.begin(), order_.end(), 0);
-        std::stable_sort(order_.begin(), order_.end(),
-                         [&](std::size_t a, std::size_t b) { return weight[a] > weight[b]; });
-        position_.assign(goal_.parts.size(), 0);
+        using Entry = std::tuple<std::size_t, std::size_t, std::size_t>; // links, weight, n - i
+        std::priority_queue<Entry> queue;
+        for (std::size_t i = 0; i < n; ++i) {
+            queue.emplace(0, weight[i], n - i);
+        }
+        std::vector<bool> placed(n, false);
+        order_.clear();
+        while (!queue.empty()) {
+            auto [l, w, r] = queue.top();
+            queue.pop();
+            std::size_t i = n - r;
+            if (placed[i] || l != links[i]) {
+                continue; // placed, or a stale entry
+            }
+            placed[i] = true;
+            order_.push_back(i);
+            for (std::size_t j : neighbours[i]) {
+                if (!placed[j]) {
+                    queue.emplace(++links[j], weight[j], n - j);
+                }
+            }
+        }
+        position_.assign(n, 0);
         for (std::size_t k = 0; k < order_.size(); ++k) {
             position_[order_[k]] = k;
         }
@@ -245,6 +313,9 @@ std::vector<std::string> goal_statements(const ACSet& goal) {
 GoalSatisfaction goal_satisfaction(const ACSet& goal, const ACSet& x, std::uint64_t node_limit) {
     CATPLAN_ASSERT(&goal.schema() == &x.schema(), "goal and state on different schemas");
     Goal g = read_goal(goal);
+    if (plan::embed_goal(goal, x)) {
+        return {g.statements.size(), g.statements.size(), {}, true}; // a monic G -> X: all hold
+    }
     Search search(g, x, node_limit);
     search.run();
     GoalSatisfaction out;
