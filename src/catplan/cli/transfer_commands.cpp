@@ -220,6 +220,8 @@ nlohmann::json json_report(const TransferArgs& a, const TransferInputs& in, cons
     j["goal_statements"] = r.goal.total;
     j["unsatisfied"] = r.goal.unsatisfied;
     j["migration"] = std::string(transfer::to_string(t.migration));
+    // Δ_F preserves pushouts: each migrated step applies by construction (paper Appendix A).
+    j["valid_by_construction"] = t.migration == transfer::MigrationKind::Delta;
     j["map"] = a.map;
     j["source_schema"] = in.map->source()->name();
     j["target_schema"] = in.map->target()->name();

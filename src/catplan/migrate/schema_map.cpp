@@ -13,6 +13,20 @@ std::string ob_name(const schema::Schema& s, ObId x) {
     return "'" + s.ob(x).name + "'";
 }
 
+// Why the image p of a target hom (`what`, from target object c) is not a path from where c
+// goes: it starts elsewhere (the paper's Gripper => Block), or it breaks in the middle.
+std::string ill_formed_image(const schema::Schema& target, const schema::Schema& source,
+                             const std::string& what, ObId c, const schema::Path& p) {
+    std::string image = source.path_to_string(p);
+    if (!p.homs.empty() && source.hom(p.homs[0]).dom != p.dom) {
+        return what + " is sent to " + image + ", which starts at " +
+               ob_name(source, source.hom(p.homs[0]).dom) + ", not at " + ob_name(source, p.dom) +
+               " (where " + ob_name(target, c) + " goes)";
+    }
+    return what + " is sent to " + image + ", which does not compose from " +
+           ob_name(source, p.dom);
+}
+
 } // namespace
 
 SchemaMap::SchemaMap(SchemaPtr target, SchemaPtr source)
@@ -159,9 +173,7 @@ void SchemaMap::compile_hom(HomId f, std::vector<MapProblem>& out) {
         schema::Path p{qc.nodes()[0].ob, *e.path, std::nullopt};
         if (!source_->is_well_formed(p)) {
             out.push_back({Severity::Error, MapProblemKind::WrongEnds, g, e.range,
-                           what + " is sent to " + source_->path_to_string(p) +
-                               ", which does not compose from " +
-                               ob_name(*source_, qc.nodes()[0].ob)});
+                           ill_formed_image(t, *source_, what, c, p)});
             return;
         }
         if (qc.is_plain() && qd.is_plain()) {

@@ -1,0 +1,1 @@
+check examples/sandwich_kitchen/sandwich_kitchen.cp examples/kitchen_to_colorblocks/kitchen_to_color.cp examples/kitchen_to_warehouse/kitchen_to_warehouse.cp examples/hanoi/hanoi.cp examples/hanoi_to_blocks/hanoi_to_blocks.cp examples/colorblocks_to_blocks/forget_colors.cp examples/colorblocks_to_kitchen/swapped_map.cp

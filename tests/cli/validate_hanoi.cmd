@@ -1,0 +1,1 @@
+validate examples/hanoi/hanoi.cp --problem ThreeDiscs --plan examples/hanoi/hanoi.plan
