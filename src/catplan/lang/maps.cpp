@@ -569,11 +569,16 @@ private:
                                      s_.name(), t_.attr_type(tt).name, to_string(rhs)));
     }
 
-    void map_attr(AttrId a, const Expr& st) {
-        const Expr& rhs = st.args[1];
+    void map_attr(AttrId a, const Expr& st) { map_attr_image(a, st.args[1], st.range); }
+
+    void map_attr_image(AttrId a, const Expr& rhs, SourceRange at) {
         ValueKind want = map_->attr_type_kind(t_.attr(a).codom);
         if (is_literal_expr(rhs)) {
-            map_->map_attr_constant(a, literal_value(rhs, want), st.range);
+            map_->map_attr_constant(a, literal_value(rhs, want), at);
+            return;
+        }
+        if (rhs.is_binary("|>")) {
+            map_attr_pipe(a, rhs, at);
             return;
         }
         if (rhs.is_binary("->")) {
@@ -585,7 +590,7 @@ private:
                                               t_.attr(a).name));
                 return;
             }
-            map_->map_attr_constant(a, literal_value(body, want), st.range);
+            map_->map_attr_constant(a, literal_value(body, want), at);
             return;
         }
         ObId c = t_.attr(a).dom;
@@ -614,8 +619,41 @@ private:
             }
         }
         if (t) {
-            map_->map_attr(a, *t, st.range);
+            map_->map_attr(a, *t, at);
         }
+    }
+
+    // Julia's pipe form, reference §5.3: `(x |> (v -> false))` is the constant false (x is read,
+    // its value unused), `(label(x) |> (v -> v))` is label(x).
+    void map_attr_pipe(AttrId a, const Expr& rhs, SourceRange at) {
+        const Expr& fn = rhs.args[1];
+        if (!fn.is_binary("->") || fn.args[0].kind != Expr::Kind::Name) {
+            error(fn.range, fmt::format("expected a function such as (v -> false) after '|>' "
+                                        "for '{}'",
+                                        t_.attr(a).name));
+            return;
+        }
+        const Expr& body = fn.args[1];
+        if (body.kind == Expr::Kind::Name && body.text == fn.args[0].text) {
+            map_attr_image(a, rhs.args[0], at); // the identity: the input itself
+            return;
+        }
+        if (!is_literal_expr(body)) {
+            error(body.range, fmt::format("only a constant function such as (v -> false) or the "
+                                          "identity (v -> v) can follow '|>' for '{}'",
+                                          t_.attr(a).name));
+            return;
+        }
+        const Expr& input = rhs.args[0];
+        ObId c = t_.attr(a).dom;
+        if (input.kind == Expr::Kind::Name && mapped_.count(c.index()) &&
+            !map_->query(c).find_node(input.text) && !s_.find(input.text)) {
+            error(input.range, fmt::format("'{}' is neither a variable of the query of '{}' nor "
+                                           "a generator of '{}'",
+                                           input.text, t_.ob(c).name, s_.name()));
+            return;
+        }
+        map_->map_attr_constant(a, literal_value(body, map_->attr_type_kind(t_.attr(a).codom)), at);
     }
 
     const detail::MapForm& form_;

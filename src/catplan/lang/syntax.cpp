@@ -100,8 +100,8 @@ private:
             push(TokenKind::At, b, i_, "@");
             return;
         }
-        static constexpr std::string_view kTwo[] = {"::", "==", "<:", "=>", "->",
-                                                    "!=", "<=", ">=", "&&", "||"};
+        static constexpr std::string_view kTwo[] = {
+            "::", "==", "<:", "=>", "->", "!=", "<=", ">=", "&&", "||", "|>"};
         for (auto op : kTwo) {
             if (text_.substr(i_, 2) == op) {
                 i_ += 2;
@@ -482,11 +482,21 @@ private:
     }
 
     Expr arrow() {
-        Expr lhs = logical_or();
+        Expr lhs = pipe();
         if (at_punct("=>") || at_punct("->")) {
             std::string op = next().text;
             Expr rhs = arrow();
             return binary(op, std::move(lhs), std::move(rhs));
+        }
+        return lhs;
+    }
+
+    // Julia's pipe, `x |> (a -> false)`: first x, then the function.
+    Expr pipe() {
+        Expr lhs = logical_or();
+        while (at_punct("|>")) {
+            next();
+            lhs = binary("|>", std::move(lhs), logical_or());
         }
         return lhs;
     }

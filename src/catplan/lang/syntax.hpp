@@ -48,7 +48,7 @@ struct Expr {
         Tuple,  // (args...)
         Vector, // [args...]
         Binary, // args[0] text args[1], text one of = => -> == <: :: . and the expression
-                // operators || && != < <= > >= + - * /
+                // operators || && != < <= > >= + - * / and the pipe |>
         Unary,  // text args[0], text one of - !
         Symbol, // :text (a Julia symbol such as :unstack)
         Block,  // begin args... end (statements)
