@@ -39,3 +39,17 @@ end
   isClear => isClear
   isOnTable => isOnTable
 end
+
+# A goal stated in plain Blocksworld: a tower of three, the top one clear. Pushed back to
+# ColorBlocksworld along the same map (Σ, the left adjoint of Δ), it is the ColorBlocksworld goal
+# whose states are exactly those that migrate to a state with such a tower:
+#
+#   catplan migrate examples/colorblocks_to_blocks/forget_colors.cp --map ForgetColors \
+#       PlainTower --sigma
+@acset_colim PlainTower(PlainBlocksworld) begin
+  (top, middle, bottom)::Block
+  (o1, o2)::On
+  on_l(o1) == top; on_r(o1) == middle
+  on_l(o2) == middle; on_r(o2) == bottom
+  isClear(top) == true
+end

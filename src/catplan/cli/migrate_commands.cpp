@@ -5,6 +5,7 @@
 #include "catplan/cli/commands.hpp"
 #include "catplan/cli/common.hpp"
 #include "catplan/migrate/migration.hpp"
+#include "catplan/migrate/sigma.hpp"
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
@@ -16,6 +17,7 @@ namespace {
 
 struct MigrateArgs {
     std::string file, map, state, output;
+    bool sigma = false;
 };
 
 // The map `name` of a loaded module; nullptr with an error on err.
@@ -23,6 +25,25 @@ const migrate::SchemaMap* find_map(const lang::Module& m, const std::string& fil
                                    const std::string& name, std::ostream& err) {
     const auto* d = find_declaration(m, file, name, lang::DeclKind::Map, err);
     return d == nullptr ? nullptr : d->map.get();
+}
+
+// `--sigma`: the state, on the map's target, pushed to its source (Σ_F, the left adjoint of Δ_F).
+int push_forward(const MigrateArgs& a, const migrate::SchemaMap& f, const lang::Declaration& x,
+                 std::ostream& out, std::ostream& err) {
+    if (x.schema != f.target()) {
+        error(err, fmt::format("'{}' is on schema {}, but Σ along map '{}' takes states on {}",
+                               a.state, x.schema->name(), a.map, f.target()->name()));
+        return kBadInput;
+    }
+    auto y = migrate::sigma(f, *x.instance);
+    if (!y) {
+        error(err, fmt::format("cannot push '{}' along '{}': {}", a.state, a.map, y.error()));
+        return kUnsupported;
+    }
+    std::string text = fmt::format("instance {} pushed along {} (Σ), on {}\n", a.state, a.map,
+                                   f.source()->name()) +
+                       acset::to_tables(*y);
+    return emit(text, a.output, out, err);
 }
 
 int cmd_migrate(const MigrateArgs& a, std::ostream& out, std::ostream& err) {
@@ -35,6 +56,9 @@ int cmd_migrate(const MigrateArgs& a, std::ostream& out, std::ostream& err) {
     const auto* x = find_declaration(*m, a.file, a.state, lang::DeclKind::Instance, err);
     if (f == nullptr || x == nullptr) {
         return kBadInput;
+    }
+    if (a.sigma) {
+        return push_forward(a, *f, *x, out, err);
     }
     if (x->schema != f->source()) {
         error(err, fmt::format("'{}' is on schema {}, but map '{}' migrates states on {}", a.state,
@@ -113,6 +137,10 @@ void add_migrate_commands(CLI::App& app, CommandTable& table) {
         ->required();
     migrate_cmd->add_option("-o,--output", migrate_args->output,
                             "write to this file instead of stdout");
+    migrate_cmd->add_flag(
+        "--sigma", migrate_args->sigma,
+        "push STATE, on the map's target schema, to its source instead (Σ_F, "
+        "the left adjoint of Δ_F; delta maps only; exit 3 when it cannot be done)");
     table.add(migrate_cmd, [migrate_args](std::ostream& o, std::ostream& e) {
         return cmd_migrate(*migrate_args, o, e);
     });

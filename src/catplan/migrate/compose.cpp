@@ -299,8 +299,12 @@ Result<SchemaMap> first_delta(const SchemaMap& first, const SchemaMap& second) {
             continue;
         }
         if (im.path) {
-            Term w = Term::path(qc.nodes()[0].name, *im.path);
-            out.map_hom(HomId(h), {translate(first, w)});
+            Term w = translate(first, Term::path(qc.nodes()[0].name, *im.path));
+            if (qc.is_plain() && qd.is_plain()) {
+                out.map_hom_path(HomId(h), std::move(w.homs)); // plain to plain stays a path
+            } else {
+                out.map_hom(HomId(h), {std::move(w)});
+            }
             continue;
         }
         std::vector<Term> terms;

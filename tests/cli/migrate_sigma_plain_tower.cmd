@@ -1,0 +1,1 @@
+migrate examples/colorblocks_to_blocks/forget_colors.cp --map ForgetColors PlainTower --sigma
