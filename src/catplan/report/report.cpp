@@ -220,13 +220,16 @@ std::vector<std::string> split_bindings(const std::string& text) {
     return out;
 }
 
-std::string bound_part(const std::string& binding) {
+// The rule generator a binding "block ↦ E" binds ("block"); "" when it is not a binding.
+std::string bound_generator(const std::string& binding) {
     static constexpr std::string_view kArrow = " ↦ ";
     std::size_t at = binding.find(kArrow);
-    return at == std::string::npos ? std::string() : binding.substr(at + kArrow.size());
+    return at == std::string::npos ? std::string() : binding.substr(0, at);
 }
 
-/// A list of bindings; those binding a part in `shared` are bold (the parts both matches bind).
+/// A list of bindings; those of a generator in `shared` are bold (the generators both matches
+/// bind: a migrated rule's parts are named after the source rule's, so they are the parts the
+/// map carries, whatever the bound parts are called in the target).
 std::string bindings_list(const std::string& text, const std::set<std::string>& shared) {
     auto items = split_bindings(text);
     if (items.empty()) {
@@ -234,17 +237,17 @@ std::string bindings_list(const std::string& text, const std::set<std::string>& 
     }
     std::string o = "<ul class=\"bindings\">";
     for (const auto& b : items) {
-        bool is_shared = shared.count(bound_part(b)) > 0;
+        bool is_shared = shared.count(bound_generator(b)) > 0;
         o += fmt::format("<li{}>{}</li>", is_shared ? " class=\"shared\"" : "", escape_html(b));
     }
     return o + "</ul>";
 }
 
-std::set<std::string> bound_parts(const std::string& text) {
+std::set<std::string> bound_generators(const std::string& text) {
     std::set<std::string> out;
     for (const auto& b : split_bindings(text)) {
-        if (auto p = bound_part(b); !p.empty()) {
-            out.insert(p);
+        if (auto g = bound_generator(b); !g.empty()) {
+            out.insert(g);
         }
     }
     return out;
@@ -272,11 +275,12 @@ std::string states_details(const ReportInput& in, std::size_t i, Pictures& pictu
 
 std::string step_row(const ReportInput& in, std::size_t i, Pictures& pictures) {
     const auto& st = in.transfer->steps[i];
-    auto source_parts = bound_parts(st.source_bindings);
-    auto target_parts = bound_parts(st.target_bindings);
+    auto source_generators = bound_generators(st.source_bindings);
+    auto target_generators = bound_generators(st.target_bindings);
     std::set<std::string> shared;
-    std::set_intersection(source_parts.begin(), source_parts.end(), target_parts.begin(),
-                          target_parts.end(), std::inserter(shared, shared.end()));
+    std::set_intersection(source_generators.begin(), source_generators.end(),
+                          target_generators.begin(), target_generators.end(),
+                          std::inserter(shared, shared.end()));
     std::string o = fmt::format("<tr><td class=\"num\">{}</td>", i + 1);
     o += fmt::format("<td><span class=\"step\">{}</span>{}</td>",
                      escape_html(st.source.to_string()), bindings_list(st.source_bindings, shared));

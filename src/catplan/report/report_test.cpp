@@ -212,9 +212,11 @@ struct Made {
     std::optional<transfer::Replan> rp;
     std::string html;
 
-    explicit Made(bool with_replan = false, std::string map_name = "ToKitchen") {
+    explicit Made(bool with_replan = false, std::string map_name = "ToKitchen",
+                  bool rename_by_type = false) {
         transfer::TransferOptions o;
         o.keep_states = true;
+        o.rename_by_type = rename_by_type;
         t = transfer::transfer_plan(map, *fx.problem, fx.plan, o);
         ReportInput in;
         in.map = &map;
@@ -253,6 +255,16 @@ TEST(Report, ShowsTheVerdictStepsAndPictures) {
     EXPECT_FALSE(contains(h, "<script"));
     EXPECT_FALSE(contains(h, "Efficiency")); // no replanning
     EXPECT_FALSE(contains(h, "Missing pictures"));
+}
+
+TEST(Report, BindingsOfTheCarriedPartsAreBoldAlsoWhenRenamed) {
+    for (bool rename : {false, true}) {
+        SCOPED_TRACE(rename);
+        Made m(false, "ToKitchen", rename);
+        ASSERT_TRUE(m.t.valid) << m.t.reason;
+        // Each step's three parameters, bold in both columns.
+        EXPECT_GE(count(m.html, "<li class=\"shared\">"), 6 * m.t.steps.size());
+    }
 }
 
 TEST(Report, SvgIdsAreUniqueOnThePage) {
