@@ -5,11 +5,13 @@
 #include "catplan/rewrite/dpo.hpp"
 #include "catplan/transfer/rename.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <chrono>
 #include <fmt/format.h>
 #include <functional>
 #include <map>
+#include <string>
 #include <sys/resource.h>
 #include <unordered_map>
 
@@ -35,8 +37,10 @@ std::string lowercase(std::string_view text) {
 // parts of an object maps to kNoPart (ambiguous).
 class NamedState {
 public:
-    explicit NamedState(ACSet x) : x_(std::move(x)), index_(x_.schema().num_obs()) {
+    explicit NamedState(ACSet x)
+        : x_(std::move(x)), index_(x_.schema().num_obs()), suffix_hints_(index_.size()) {
         for (std::uint32_t o = 0; o < index_.size(); ++o) {
+            index_[o].reserve(x_.num_parts(ObId(o)));
             for (Part p = 0; p < x_.num_parts(ObId(o)); ++p) {
                 add(ObId(o), p);
             }
@@ -45,9 +49,12 @@ public:
 
     const ACSet& state() const { return x_; }
 
+    /// The state, moved out (the names index is left behind).
+    ACSet release() && { return std::move(x_); }
+
     /// The only part of ob with this name, or kNoPart.
     Part find(ObId ob, std::string_view name) const {
-        auto it = index_[ob.index()].find(std::string(name));
+        auto it = index_[ob.index()].find(name);
         return it == index_[ob.index()].end() ? kNoPart : it->second;
     }
 
@@ -77,11 +84,14 @@ public:
         if (!r_to_x) {
             return r_to_x;
         }
-        // Pop-and-swap moved parts into deleted slots only: re-index what sits there now.
+        // Pop-and-swap moved surviving parts into deleted slots below the count of survivors;
+        // the created parts come after them (R's order) and are named below. A moved part's
+        // entry still holds its old id: point it at the slot it sits in now.
         for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
+            Part survivors = x_.num_parts(ObId(o)) - created_count(rule, ObId(o));
             for (Part p : deleted[o]) {
-                if (p < x_.num_parts(ObId(o))) {
-                    add(ObId(o), p);
+                if (p < survivors) {
+                    moved(ObId(o), p, survivors);
                 }
             }
         }
@@ -89,38 +99,100 @@ public:
         return r_to_x;
     }
 
-    /// A name for a new part of ob, starting from base, not used in ob yet.
+    /// A name for a new part of ob, starting from base, that no part of ob has: base, else
+    /// base2, base3, ... (the first free one). The search for a suffix starts at a hint per base
+    /// below which every suffix is taken, lowered when a name with a smaller suffix is freed, so
+    /// that a step costs what it creates, not the number of names sharing the base.
     std::string fresh_name(ObId ob, const std::string& base) {
-        auto& used = index_[ob.index()];
-        if (!used.count(base)) {
+        if (!taken(ob, base)) {
             return base;
         }
-        for (int k = 2;; ++k) {
+        auto& hints = suffix_hints_[ob.index()];
+        auto it = hints.find(base);
+        if (it == hints.end()) {
+            it = hints.emplace(base, 2).first;
+        }
+        for (std::uint64_t k = it->second;; ++k) {
             std::string name = fmt::format("{}{}", base, k);
-            if (!used.count(name)) {
+            if (!taken(ob, name)) {
+                it->second = k + 1; // the caller gives the name to a part at once
                 return name;
             }
         }
     }
 
 private:
+    // Keys are views of part names, which are interned for the life of the process; a name
+    // that several parts share maps to kNoPart.
+    using Index = std::unordered_map<std::string_view, Part>;
+
+    bool taken(ObId ob, std::string_view name) const { return index_[ob.index()].count(name) > 0; }
+
     void add(ObId ob, Part p) {
         std::string_view n = x_.part_name(ob, p);
         if (n.empty()) {
             return;
         }
-        auto [it, fresh] = index_[ob.index()].emplace(std::string(n), p);
+        auto [it, fresh] = index_[ob.index()].emplace(n, p);
         if (!fresh && it->second != p) {
             it->second = kNoPart;
         }
     }
 
+    // Forgets p's name (a shared name stays taken: which part keeps it is not known).
     void remove(ObId ob, Part p) {
+        std::string_view n = x_.part_name(ob, p);
         auto& idx = index_[ob.index()];
-        auto it = idx.find(std::string(x_.part_name(ob, p)));
+        auto it = idx.find(n);
         if (it != idx.end() && it->second == p) {
             idx.erase(it);
+            freed(ob, n);
         }
+    }
+
+    // The part now at slot p (p < survivors) was moved there by a pop-and-swap from an id at or
+    // above survivors. Its entry points at that old id, unless the name is shared with another
+    // surviving part (ambiguous, kNoPart, or held by a part below survivors that has the name).
+    void moved(ObId ob, Part p, Part survivors) {
+        std::string_view n = x_.part_name(ob, p);
+        if (n.empty()) {
+            return;
+        }
+        auto [it, fresh] = index_[ob.index()].emplace(n, p);
+        Part& e = it->second;
+        if (fresh || e == p) {
+            return;
+        }
+        bool shared = e == kNoPart || (e < survivors && x_.part_name(ob, e) == n);
+        e = shared ? kNoPart : p;
+    }
+
+    // A name base<k> no longer taken lowers the hint of base to k.
+    void freed(ObId ob, std::string_view name) {
+        for (auto& [base, hint] : suffix_hints_[ob.index()]) {
+            if (name.size() <= base.size() || name.substr(0, base.size()) != base) {
+                continue;
+            }
+            std::string_view digits = name.substr(base.size());
+            if (digits[0] == '0' || digits.size() > 18 ||
+                !std::all_of(digits.begin(), digits.end(),
+                             [](char c) { return c >= '0' && c <= '9'; })) {
+                continue;
+            }
+            std::uint64_t k = std::stoull(std::string(digits));
+            if (k >= 2 && k < hint) {
+                hint = k;
+            }
+        }
+    }
+
+    // The parts of ob that rule creates (R's parts outside r's image).
+    static Part created_count(const rewrite::Rule& rule, ObId ob) {
+        std::vector<bool> kept(rule.R.num_parts(ob), false);
+        for (Part k : rule.r.components[ob.index()]) {
+            kept[k] = true;
+        }
+        return static_cast<Part>(std::count(kept.begin(), kept.end(), false));
     }
 
     void name_created(const rewrite::Rule& rule, const ACSetMorphism& r_to_x,
@@ -142,7 +214,10 @@ private:
     }
 
     ACSet x_;
-    std::vector<std::unordered_map<std::string, Part>> index_;
+    /// Per object: name -> the parts that have it.
+    std::vector<Index> index_;
+    /// Per object: for each base fresh_name had to suffix, the smallest suffix that may be free.
+    std::vector<std::map<std::string, std::uint64_t, std::less<>>> suffix_hints_;
 };
 
 // Names every unnamed part after its label (#7), so that names can follow every part.
@@ -300,7 +375,8 @@ public:
         }
         out_.timings.apply_ms = ms_since(t0);
         finish_source();
-        out_.final_state = y_->state();
+        out_.final_state = std::move(*y_).release();
+        y_.reset();
     }
 
 private:
