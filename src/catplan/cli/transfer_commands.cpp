@@ -188,8 +188,17 @@ std::string text_report(const TransferArgs& a, const TransferInputs& in, const O
                              rp->steps.size(), rp->edit_distance);
         }
         o += fmt::format("; expanded {}\n", rp->search.stats.expanded);
+        bool mixed = false;
         for (std::size_t i = 0; i < rp->steps.size(); ++i) {
             o += fmt::format("  {}. {}\n", i + 1, rp->steps[i].to_string());
+            for (const auto& arg : rp->steps[i].args) {
+                mixed = mixed || arg.find('|') != std::string::npos;
+            }
+        }
+        if (mixed) {
+            o += "  note: an argument a|b binds one parameter to different parts in different "
+                 "target types (e.g. one block's Object and another's Receptacle): the target "
+                 "ontology does not tie them, so replanning may mix them\n";
         }
         if (!a.no_timing) {
             o +=

@@ -274,18 +274,40 @@ std::vector<hom::PartBinding> carried_bindings(const ActionPair& a, const ACSetM
     return out;
 }
 
-// The step `rule(args)` of a match: one argument per distinct parameter name.
+// One argument per distinct parameter name, from labels[i] for parameter i: the distinct labels
+// a name binds, joined with '|' when they differ (a migrated action has a parameter per target
+// object its source parameter goes to, and a replanned step may bind them to different parts).
+std::vector<std::string> collapse(const std::vector<rewrite::Parameter>& parameters,
+                                  const std::vector<std::string>& labels) {
+    std::vector<std::string_view> names;
+    std::vector<std::vector<std::string>> bound;
+    for (std::size_t i = 0; i < parameters.size() && i < labels.size(); ++i) {
+        auto it = std::find(names.begin(), names.end(), parameters[i].name);
+        std::size_t k = static_cast<std::size_t>(it - names.begin());
+        if (it == names.end()) {
+            names.push_back(parameters[i].name);
+            bound.emplace_back();
+        }
+        if (std::find(bound[k].begin(), bound[k].end(), labels[i]) == bound[k].end()) {
+            bound[k].push_back(labels[i]);
+        }
+    }
+    std::vector<std::string> out;
+    for (const auto& b : bound) {
+        out.push_back(fmt::format("{}", fmt::join(b, "|")));
+    }
+    return out;
+}
+
+// The step `rule(args)` of a match, arguments collapsed by parameter name.
 plan::Step step_of(const rewrite::Rule& rule, const ACSetMorphism& m, const ACSet& y) {
     plan::Step step;
     step.action = rule.name;
-    std::vector<std::string_view> seen;
+    std::vector<std::string> labels;
     for (const auto& p : rule.parameters) {
-        if (std::find(seen.begin(), seen.end(), p.name) != seen.end()) {
-            continue;
-        }
-        seen.push_back(p.name);
-        step.args.push_back(y.part_label(p.ob, m.components[p.ob.index()][p.part]));
+        labels.push_back(y.part_label(p.ob, m.components[p.ob.index()][p.part]));
     }
+    step.args = collapse(rule.parameters, labels);
     return step;
 }
 
@@ -569,14 +591,7 @@ plan::Step collapse_arguments(const rewrite::Rule& rule, const plan::Step& step)
     plan::Step out;
     out.action = step.action;
     out.range = step.range;
-    std::vector<std::string_view> seen;
-    for (std::size_t i = 0; i < rule.parameters.size() && i < step.args.size(); ++i) {
-        const auto& name = rule.parameters[i].name;
-        if (std::find(seen.begin(), seen.end(), name) == seen.end()) {
-            seen.push_back(name);
-            out.args.push_back(step.args[i]);
-        }
-    }
+    out.args = collapse(rule.parameters, step.args);
     return out;
 }
 

@@ -125,7 +125,8 @@ TransferResult transfer_plan(const SchemaMap& f, const plan::Problem& problem,
 
 /// A step of `rule` written with one argument per distinct parameter name (a migrated rule
 /// carries a parameter to every target object that has it: `unstack(E, D)`, not
-/// `unstack(E, E, D, D)`).
+/// `unstack(E, E, D, D)`); parts one name binds that differ are joined with '|' (`stack(B|A,
+/// A|D)`: B's Object with A's Receptacle).
 plan::Step collapse_arguments(const rewrite::Rule& rule, const plan::Step& step);
 
 /// Replanning in the target domain from Y_0 to Δ_F(G) with the generated actions (Metric 5).

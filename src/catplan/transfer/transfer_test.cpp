@@ -271,6 +271,17 @@ TEST(Transfer, ReplanFindsAPlanAndMeasuresTheEditDistance) {
     EXPECT_EQ(rp.edit_distance, 1u);
 }
 
+TEST(Transfer, CollapsedArgumentsShowPartsThatDisagree) {
+    Stacks t = stacks();
+    rewrite::Rule rule(t.s);
+    rule.parameters = {
+        {"block", t.block, 0}, {"block", t.on, 0}, {"under", t.block, 1}, {"under", t.on, 1}};
+    plan::Step agree{"stack", {"B", "B", "D", "D"}, {}};
+    EXPECT_EQ(collapse_arguments(rule, agree).to_string(), "stack(B, D)");
+    plan::Step mixed{"stack", {"B", "A", "A", "D"}, {}};
+    EXPECT_EQ(collapse_arguments(rule, mixed).to_string(), "stack(B|A, A|D)");
+}
+
 TEST(Transfer, EditDistanceCountsWholeSteps) {
     using S = plan::Step;
     std::vector<S> a = {{"pickup", {"A"}, {}}, {"stack", {"A", "B"}, {}}};
