@@ -44,17 +44,41 @@ Part ACSet::add_part(ObId x, std::string_view name) {
             vx->pos[attr_slot(a)].push_back(0);
         }
     }
-    names_[x.index()].push_back(Symbol::intern(name));
+    auto& names = names_[x.index()];
+    if (!name.empty() || !names.empty()) {
+        names.resize(p); // the first name: every earlier part is unnamed
+        names.push_back(name.empty() ? Symbol() : Symbol::intern(name));
+    }
     return p;
 }
 
 Part ACSet::add_parts(ObId x, std::size_t n) {
-    auto first = static_cast<Part>(nparts_[x.index()]);
-    reserve(x, first + n);
-    for (std::size_t i = 0; i < n; ++i) {
-        add_part(x);
+    std::size_t first = nparts_[x.index()];
+    std::size_t total = first + n;
+    CATPLAN_ASSERT(total <= kNoPart, "add_parts: too many parts");
+    // Column by column, as add_part does part by part.
+    for (HomId f : schema_->homs_from(x)) {
+        homs_[f.index()].resize(total, kNoPart);
+        if (index_[f.index()]) {
+            index_[f.index()]->pos.resize(total, 0);
+        }
     }
-    return first;
+    for (HomId g : schema_->homs_into(x)) {
+        if (index_[g.index()]) {
+            index_[g.index()]->lists.resize(total);
+        }
+    }
+    for (AttrId a : schema_->attrs_from(x)) {
+        attrs_[a.index()].resize(total);
+        if (auto* vx = var_index_if_built(schema_->attr(a).codom)) {
+            vx->pos[attr_slot(a)].resize(total, 0);
+        }
+    }
+    if (!names_[x.index()].empty()) {
+        names_[x.index()].resize(total);
+    }
+    nparts_[x.index()] = total;
+    return static_cast<Part>(first);
 }
 
 void ACSet::reserve(ObId x, std::size_t n) {
@@ -64,7 +88,9 @@ void ACSet::reserve(ObId x, std::size_t n) {
     for (AttrId a : schema_->attrs_from(x)) {
         attrs_[a.index()].reserve(n);
     }
-    names_[x.index()].reserve(n);
+    if (!names_[x.index()].empty()) {
+        names_[x.index()].reserve(n);
+    }
 }
 
 void ACSet::index_insert(HomId f, Part p, Part q) {
@@ -99,6 +125,23 @@ void ACSet::set_subpart(HomId f, Part p, Part q) {
         }
     }
     cell = q;
+}
+
+void ACSet::set_column(HomId f, std::span<const Part> values) {
+    const auto& info = schema_->hom(f);
+    CATPLAN_ASSERT(values.size() == nparts_[info.dom.index()], "set_column: wrong length");
+    // Copy and check in one pass: q is in range when q + 1 <= n (kNoPart wraps to 0). The check
+    // is an or-reduction of compares, so that it vectorises with the copy.
+    const auto n = static_cast<Part>(nparts_[info.codom.index()]);
+    Part* col = homs_[f.index()].data();
+    Part out_of_range = 0;
+    for (std::size_t p = 0; p < values.size(); ++p) {
+        Part q = values[p];
+        out_of_range |= static_cast<Part>(static_cast<Part>(q + 1) > n);
+        col[p] = q;
+    }
+    CATPLAN_ASSERT(out_of_range == 0, "set_column: value out of range");
+    index_[f.index()].reset();
 }
 
 const ACSet::Preimage& ACSet::index(HomId f) const {
@@ -179,9 +222,10 @@ Part ACSet::remove_part(ObId x, Part p) {
             vx->pos[attr_slot(a)].pop_back();
         }
     }
-    auto& names = names_[x.index()];
-    names[p] = names[last];
-    names.pop_back();
+    if (auto& names = names_[x.index()]; !names.empty()) {
+        names[p] = names[last];
+        names.pop_back();
+    }
     --nparts_[x.index()];
     return p == last ? kNoPart : last;
 }
@@ -201,6 +245,21 @@ void ACSet::set_subpart(AttrId a, Part p, Value v) {
         }
     }
     cell = v;
+}
+
+void ACSet::set_column(AttrId a, std::span<const Value> values) {
+    const auto& info = schema_->attr(a);
+    CATPLAN_ASSERT(values.size() == nparts_[info.dom.index()], "set_column: wrong length");
+    const std::uint32_t n = nvars_[info.codom.index()];
+    Value* col = attrs_[a.index()].data();
+    bool vars_exist = true;
+    for (std::size_t p = 0; p < values.size(); ++p) {
+        const Value& v = values[p];
+        vars_exist &= !v.is_var() || v.var_index() < n;
+        col[p] = v;
+    }
+    CATPLAN_ASSERT(vars_exist, "set_column: no such attribute variable");
+    var_index_[info.codom.index()].reset();
 }
 
 const ACSet::VarIndex& ACSet::var_index(AttrTypeId t) const {
@@ -249,7 +308,7 @@ std::span<const ACSet::Cell> ACSet::var_incident(AttrTypeId t, std::uint32_t j) 
 
 Value ACSet::add_var(AttrTypeId t, std::string_view name) {
     auto j = nvars_[t.index()]++;
-    var_names_[t.index()].push_back(Symbol::intern(name));
+    var_names_[t.index()].push_back(name.empty() ? Symbol() : Symbol::intern(name));
     if (auto* vx = var_index_if_built(t)) {
         vx->lists.emplace_back();
     }
@@ -282,7 +341,19 @@ std::uint32_t ACSet::remove_var(AttrTypeId t, std::uint32_t j) {
 }
 
 void ACSet::set_part_name(ObId x, Part p, std::string_view name) {
-    names_[x.index()][p] = Symbol::intern(name);
+    CATPLAN_ASSERT(p < nparts_[x.index()], "set_part_name: part out of range");
+    auto& names = names_[x.index()];
+    if (name.empty() && names.empty()) {
+        return;
+    }
+    names.resize(nparts_[x.index()]);
+    names[p] = name.empty() ? Symbol() : Symbol::intern(name);
+}
+
+void ACSet::set_part_names(ObId x, std::vector<Symbol> names) {
+    CATPLAN_ASSERT(names.empty() || names.size() == nparts_[x.index()],
+                   "set_part_names: wrong length");
+    names_[x.index()] = std::move(names);
 }
 
 void ACSet::set_var_name(AttrTypeId t, std::uint32_t j, std::string_view name) {

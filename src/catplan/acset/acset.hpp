@@ -5,13 +5,16 @@
 // for each attribute a column of Values (a constant, an attribute variable, or unset); for each
 // attribute type a count of variables 0..k-1 (Catlab's AttrVar parts). A preimage index per hom
 // makes incident(f, y) cost O(result); it is built on first use and then kept in step with
-// set_subpart, add_part and remove_part.
+// set_subpart, add_part(s) and remove_part. A whole column can be written at once by set_column
+// (for building a state in bulk, as data migration does); that drops the column's index, which
+// is rebuilt on its next use.
 //
 // Deletion is pop-and-swap, as in Catlab's rem_part!: removing part p of X moves the last part of
 // X into slot p (its columns and name come along and every reference to it is redirected to p),
 // and every hom value that pointed at the removed part becomes unset. Removal does not cascade.
 //
 // Parts and variables may carry names (labels for people: equality and morphisms ignore them).
+// An object none of whose parts is named stores no names, so unnamed parts cost nothing.
 //
 //   ACSet g(graph_schema);
 //   Part v0 = g.add_part(V), v1 = g.add_part(V);
@@ -64,6 +67,10 @@ public:
 
     std::span<const Part> column(HomId f) const { return homs_[f.index()]; }
 
+    /// Sets f(p) = values[p] for every part p of f's domain (one value each, a part of f's
+    /// codomain or kNoPart; asserted) in one pass, dropping f's preimage index until its next use.
+    void set_column(HomId f, std::span<const Part> values);
+
     /// The parts p with f(p) == q, in no particular (but deterministic) order.
     std::span<const Part> incident(HomId f, Part q) const;
     /// Builds every preimage index now (otherwise each is built on its first incident call).
@@ -76,6 +83,11 @@ public:
     void set_subpart(AttrId a, Part p, Value v);
 
     std::span<const Value> column(AttrId a) const { return attrs_[a.index()]; }
+
+    /// Sets a(p) = values[p] for every part p of a's domain (one value each, any variable one of
+    /// this state's; asserted) in one pass, dropping the variable index of a's type until its next
+    /// use.
+    void set_column(AttrId a, std::span<const Value> values);
 
     // ---- attribute variables -----------------------------------------------------------------
     std::size_t num_vars(AttrTypeId t) const { return nvars_[t.index()]; }
@@ -100,14 +112,26 @@ public:
 
     // ---- names -------------------------------------------------------------------------------
     /// The name of a part, or "" when it has none.
-    std::string_view part_name(ObId x, Part p) const { return names_[x.index()][p].str(); }
+    std::string_view part_name(ObId x, Part p) const {
+        const auto& names = names_[x.index()];
+        return names.empty() ? std::string_view() : text(names[p]);
+    }
 
     void set_part_name(ObId x, Part p, std::string_view name);
+
+    /// The name symbols of the parts of x, one per part (Symbol() for an unnamed part), or an
+    /// empty span when x stores none, which means that no part of x is named.
+    std::span<const Symbol> part_names(ObId x) const { return names_[x.index()]; }
+
+    /// Replaces the names of the parts of x by `names`: one per part (Symbol() for none), or
+    /// none at all to unname every part (asserted).
+    void set_part_names(ObId x, std::vector<Symbol> names);
+
     /// The first part of x with this name.
     std::optional<Part> find_part(ObId x, std::string_view name) const;
 
     std::string_view var_name(AttrTypeId t, std::uint32_t j) const {
-        return var_names_[t.index()][j].str();
+        return text(var_names_[t.index()][j]);
     }
 
     void set_var_name(AttrTypeId t, std::uint32_t j, std::string_view name);
@@ -123,6 +147,9 @@ public:
     friend bool operator==(const ACSet& a, const ACSet& b);
 
 private:
+    // The text of a name; the empty name is answered without locking the symbol table.
+    static std::string_view text(Symbol s) { return s == Symbol() ? std::string_view() : s.str(); }
+
     struct Preimage {
         std::vector<std::vector<Part>> lists; // by target part
         std::vector<std::uint32_t> pos;       // position of each source part in its list
@@ -153,7 +180,7 @@ private:
     std::vector<std::vector<Part>> homs_;
     std::vector<std::vector<Value>> attrs_;
     std::vector<std::uint32_t> nvars_;
-    std::vector<std::vector<Symbol>> names_;
+    std::vector<std::vector<Symbol>> names_; // per object: empty, or one per part
     std::vector<std::vector<Symbol>> var_names_;
     mutable std::vector<std::optional<Preimage>> index_;
     mutable std::vector<std::optional<VarIndex>> var_index_;

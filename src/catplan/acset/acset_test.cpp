@@ -130,6 +130,131 @@ TEST(ACSet, PrintsTables) {
                             "  1   e1    a    #2\n");
 }
 
+TEST(ACSet, SetColumnReplacesAColumnAndItsIndex) {
+    Graph g;
+    ACSet x(g.s);
+    EXPECT_EQ(x.add_parts(g.v, 3), 0u);
+    EXPECT_EQ(x.add_parts(g.e, 4), 0u);
+    EXPECT_EQ(x.add_parts(g.e, 0), 4u);
+    EXPECT_EQ(x.column(g.src).size(), 4u);
+    EXPECT_EQ(x.subpart(g.src, 3), kNoPart) << "add_parts leaves homs unset";
+    x.set_subpart(g.src, 0, 2);
+    EXPECT_EQ(sorted(x.incident(g.src, 2)), (std::vector<Part>{0})); // index built
+    x.set_column(g.src, std::vector<Part>{1, kNoPart, 1, 0});
+    EXPECT_EQ(x.subpart(g.src, 0), 1u);
+    EXPECT_EQ(x.subpart(g.src, 1), kNoPart);
+    EXPECT_TRUE(x.incident(g.src, 2).empty()) << "the old index is not used";
+    EXPECT_EQ(sorted(x.incident(g.src, 1)), (std::vector<Part>{0, 2}));
+    EXPECT_EQ(sorted(x.incident(g.src, 0)), (std::vector<Part>{3}));
+    // The rebuilt index is kept in step by the per-cell edits as before.
+    x.set_subpart(g.src, 1, 0);
+    Part e = x.add_part(g.e);
+    x.set_subpart(g.src, e, 2);
+    EXPECT_EQ(sorted(x.incident(g.src, 0)), (std::vector<Part>{1, 3}));
+    EXPECT_EQ(x.remove_part(g.v, 1), 2u); // edges into 1 become unset, 2 is renumbered 1
+    EXPECT_EQ(x.column(g.src)[0], kNoPart);
+    EXPECT_EQ(sorted(x.incident(g.src, 1)), (std::vector<Part>{4}));
+    EXPECT_EQ(sorted(x.incident(g.src, 0)), (std::vector<Part>{1, 3}));
+    // A column set before any index exists.
+    x.set_column(g.tgt, std::vector<Part>{0, 0, 1, 1, 0});
+    EXPECT_EQ(sorted(x.incident(g.tgt, 0)), (std::vector<Part>{0, 1, 4}));
+    // Bulk-added parts extend built indexes.
+    x.add_parts(g.v, 2);
+    x.add_parts(g.e, 2);
+    EXPECT_TRUE(x.incident(g.tgt, 3).empty());
+    x.set_subpart(g.tgt, 6, 3);
+    EXPECT_EQ(sorted(x.incident(g.tgt, 3)), (std::vector<Part>{6}));
+    ACSet y(g.s);
+    y.add_parts(g.v, 4);
+    y.add_parts(g.e, 7);
+    y.set_column(g.src, x.column(g.src)); // from another state
+    for (Part p = 0; p < 7; ++p) {
+        y.set_subpart(g.tgt, p, x.subpart(g.tgt, p));
+    }
+    EXPECT_EQ(x, y);
+    x.set_column(g.tgt, x.column(g.tgt)); // from itself: no change but the index
+    EXPECT_EQ(x, y);
+    EXPECT_EQ(sorted(x.incident(g.tgt, 3)), (std::vector<Part>{6}));
+}
+
+TEST(ACSet, SetColumnOfAnAttribute) {
+    auto s = std::make_shared<Schema>("TwoAttrs");
+    ObId xo = s->add_ob("X");
+    AttrTypeId d = s->add_attr_type("D", schema::ValueKind::Int);
+    AttrId f = s->add_attr("f", xo, d);
+    AttrId g = s->add_attr("g", xo, d);
+    ACSet a(s);
+    a.add_parts(xo, 3);
+    a.add_var(d);
+    a.add_var(d, "b");
+    EXPECT_EQ(a.subpart(f, 2), Value()) << "add_parts leaves attributes unset";
+    a.set_subpart(g, 0, Value::var(1));
+    EXPECT_EQ(a.var_incident(d, 1).size(), 1u); // index built
+    a.set_column(f, std::vector<Value>{Value::var(1), Value::integer(4), Value::var(0)});
+    EXPECT_EQ(a.subpart(f, 1), Value::integer(4));
+    EXPECT_EQ(a.var_incident(d, 1).size(), 2u) << "cells of both attributes";
+    EXPECT_EQ(a.var_incident(d, 0).size(), 1u);
+    EXPECT_EQ(a.var_incident(d, 0)[0], (ACSet::Cell{f, 2}));
+    // Kept in step afterwards.
+    EXPECT_EQ(a.remove_var(d, 0), 1u);
+    EXPECT_EQ(a.subpart(f, 0), Value::var(0));
+    EXPECT_EQ(a.subpart(f, 2), Value());
+    EXPECT_EQ(a.subpart(g, 0), Value::var(0));
+    EXPECT_EQ(a.var_incident(d, 0).size(), 2u);
+    EXPECT_EQ(a.value_label(d, a.subpart(f, 0)), "?b");
+    EXPECT_EQ(a.var_name(d, 0), "b");
+    a.add_var(d, "");
+    EXPECT_EQ(a.var_name(d, 1), "");
+    a.add_parts(xo, 1);
+    a.set_subpart(f, 3, Value::var(0));
+    EXPECT_EQ(a.var_incident(d, 0).size(), 3u);
+}
+
+TEST(ACSet, PartNamesInBulk) {
+    Graph g;
+    ACSet x(g.s);
+    x.add_parts(g.v, 2);
+    x.add_part(g.v);
+    x.set_part_name(g.v, 1, "");
+    EXPECT_TRUE(x.part_names(g.v).empty()) << "no names stored while no part is named";
+    EXPECT_EQ(x.part_name(g.v, 2), "");
+    EXPECT_EQ(x.find_part(g.v, "a"), std::nullopt);
+    x.set_part_name(g.v, 1, "b");
+    ASSERT_EQ(x.part_names(g.v).size(), 3u);
+    EXPECT_EQ(x.part_names(g.v)[0], Symbol());
+    EXPECT_EQ(x.part_names(g.v)[1], Symbol::intern("b"));
+    EXPECT_EQ(x.remove_part(g.v, 0), 2u);
+    EXPECT_EQ(x.part_name(g.v, 1), "b");
+    x.set_part_names(g.v, {});
+    EXPECT_TRUE(x.part_names(g.v).empty());
+    EXPECT_EQ(x.part_name(g.v, 1), "");
+    x.remove_part(g.v, 0);
+    x.remove_part(g.v, 0);
+    ASSERT_EQ(x.num_parts(g.v), 0u);
+
+    x.add_part(g.v, "a");
+    x.add_parts(g.v, 2);
+    x.add_part(g.v, "");
+    std::span<const Symbol> names = x.part_names(g.v);
+    ASSERT_EQ(names.size(), 4u);
+    EXPECT_EQ(names[0], Symbol::intern("a"));
+    EXPECT_EQ(names[1], Symbol());
+    EXPECT_EQ(names[3], Symbol()) << "an empty name is no name";
+    EXPECT_EQ(x.part_name(g.v, 1), "");
+    x.set_part_names(g.v, {Symbol(), Symbol::intern("b"), Symbol(), Symbol::intern("a")});
+    EXPECT_EQ(x.part_name(g.v, 0), "");
+    EXPECT_EQ(x.part_name(g.v, 1), "b");
+    EXPECT_EQ(x.find_part(g.v, "a"), 3u);
+    EXPECT_EQ(x.part_label(g.v, 2), "#3");
+    // Names move with their parts.
+    EXPECT_EQ(x.remove_part(g.v, 1), 3u);
+    EXPECT_EQ(x.part_name(g.v, 1), "a");
+    EXPECT_EQ(x.part_names(g.v).size(), 3u);
+    x.add_parts(g.v, 2);
+    EXPECT_EQ(x.part_names(g.v).size(), 5u);
+    EXPECT_EQ(x.part_name(g.v, 4), "");
+}
+
 TEST(Value, DisplayAndKinds) {
     EXPECT_EQ(Value::real(0.0).to_string(), "0.0");
     EXPECT_EQ(Value::real(2.5).to_string(), "2.5");

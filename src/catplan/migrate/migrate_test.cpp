@@ -831,6 +831,162 @@ TEST(Properties, DeltaMapsPreservePushouts) {
     }
 }
 
+// A delta map whose migration exercises every column kind: swapped homs, a path of length two
+// through a partial hom, an identity path, attributes read along paths (constants, variables,
+// unset), a constant attribute, names of parts and variables.
+TEST(Properties, DeltaCarriesNamesVariablesAndPartialValues) {
+    auto s = std::make_shared<Schema>("Source");
+    ObId v = s->add_ob("V"), e = s->add_ob("E");
+    HomId src = s->add_hom("src", e, v), tgt = s->add_hom("tgt", e, v);
+    HomId parent = s->add_hom("parent", v, v);
+    AttrTypeId wt = s->add_attr_type("W", ValueKind::Float);
+    AttrTypeId lt = s->add_attr_type("L", ValueKind::String);
+    AttrId weight = s->add_attr("weight", e, wt);
+    AttrId label = s->add_attr("label", v, lt);
+    auto t = std::make_shared<Schema>("Target");
+    ObId v2 = t->add_ob("V2"), e2 = t->add_ob("E2");
+    HomId s2 = t->add_hom("s", e2, v2), t2 = t->add_hom("t", e2, v2);
+    HomId grand = t->add_hom("grand", e2, v2), self = t->add_hom("self", v2, v2);
+    AttrTypeId wt2 = t->add_attr_type("W2", ValueKind::Float);
+    AttrTypeId lt2 = t->add_attr_type("L2", ValueKind::String);
+    AttrId w2 = t->add_attr("w", e2, wt2), src_label = t->add_attr("srcLabel", e2, lt2);
+    AttrId one = t->add_attr("one", e2, wt2), vlabel = t->add_attr("label", v2, lt2);
+    SchemaMap m(t, s);
+    m.map_ob(v2, v);
+    m.map_ob(e2, e);
+    m.map_hom_path(s2, {tgt});
+    m.map_hom_path(t2, {src});
+    m.map_hom_path(grand, {src, parent});
+    m.map_hom_path(self, {});
+    m.map_attr_type(wt2, wt);
+    m.map_attr_type(lt2, lt);
+    m.map_attr(w2, Term::path("E2", {}, weight));
+    m.map_attr(src_label, Term::path("E2", {src}, label));
+    m.map_attr_constant(one, Value::real(1.5));
+    m.map_attr(vlabel, Term::path("V2", {}, label));
+    ASSERT_TRUE(errors_of(m.finish()).empty());
+    ASSERT_TRUE(m.is_delta());
+
+    for (int seed = 0; seed < kSeeds; ++seed) {
+        SCOPED_TRACE(seed);
+        Gen gen(static_cast<std::uint64_t>(seed) + 5000);
+        ACSet x(s);
+        std::size_t nv = 1 + gen.below(6), ne = gen.below(9);
+        std::size_t nw = gen.below(3), nl = gen.below(3);
+        auto name = [](char c, std::size_t i) {
+            std::string n(1, c);
+            n += std::to_string(i);
+            return n;
+        };
+        for (std::size_t j = 0; j < nw; ++j) {
+            x.add_var(wt, gen.below(2) ? name('w', j) : "");
+        }
+        for (std::size_t j = 0; j < nl; ++j) {
+            x.add_var(lt, gen.below(2) ? name('l', j) : "");
+        }
+        auto value = [&](bool text, std::size_t nvars) {
+            std::size_t k = gen.below(nvars + 3);
+            if (k < nvars) {
+                return Value::var(static_cast<std::uint32_t>(k));
+            }
+            if (k == nvars) {
+                return Value();
+            }
+            return text ? Value::string(name('s', k)) : Value::real(double(k));
+        };
+        auto part = [&](std::size_t n) {
+            return gen.below(4) == 0 ? kNoPart : static_cast<Part>(gen.below(n));
+        };
+        for (std::size_t i = 0; i < nv; ++i) {
+            x.add_part(v, gen.below(2) ? name('v', i) : "");
+        }
+        for (std::size_t i = 0; i < ne; ++i) {
+            x.add_part(e, gen.below(2) ? name('e', i) : "");
+        }
+        for (Part p = 0; p < nv; ++p) {
+            x.set_subpart(parent, p, part(nv));
+            x.set_subpart(label, p, value(true, nl));
+        }
+        for (Part p = 0; p < ne; ++p) {
+            x.set_subpart(src, p, part(nv));
+            x.set_subpart(tgt, p, part(nv));
+            x.set_subpart(weight, p, value(false, nw));
+        }
+        if (gen.below(2)) {
+            x.build_indexes(); // the source's indexes play no part
+        }
+
+        // The expected migration, cell by cell.
+        ACSet want(t);
+        for (std::uint32_t j = 0; j < nw; ++j) {
+            want.add_var(wt2, x.var_name(wt, j));
+        }
+        for (std::uint32_t j = 0; j < nl; ++j) {
+            want.add_var(lt2, x.var_name(lt, j));
+        }
+        for (Part p = 0; p < nv; ++p) {
+            want.add_part(v2, x.part_name(v, p));
+            want.set_subpart(vlabel, p, x.subpart(label, p));
+        }
+        for (Part p = 0; p < nv; ++p) {
+            want.set_subpart(self, p, p);
+        }
+        for (Part p = 0; p < ne; ++p) {
+            want.add_part(e2, x.part_name(e, p));
+            want.set_subpart(s2, p, x.subpart(tgt, p));
+            want.set_subpart(t2, p, x.subpart(src, p));
+            Part q = x.subpart(src, p);
+            want.set_subpart(grand, p, q == kNoPart ? kNoPart : x.subpart(parent, q));
+            want.set_subpart(w2, p, x.subpart(weight, p));
+            want.set_subpart(src_label, p, q == kNoPart ? Value() : x.subpart(label, q));
+            want.set_subpart(one, p, Value::real(1.5));
+        }
+
+        MigratedState out = migrate_state(m, x);
+        const ACSet& y = out.state;
+        ASSERT_EQ(y, want);
+        for (ObId o : {v2, e2}) {
+            for (Part p = 0; p < y.num_parts(o); ++p) {
+                EXPECT_EQ(y.part_name(o, p), want.part_name(o, p));
+            }
+        }
+        for (AttrTypeId ty : {wt2, lt2}) {
+            for (std::uint32_t j = 0; j < y.num_vars(ty); ++j) {
+                EXPECT_EQ(y.var_name(ty, j), want.var_name(ty, j));
+            }
+        }
+        // The migrated state's indexes agree with its columns.
+        for (HomId h : {s2, t2, grand, self}) {
+            ObId d = t->hom(h).codom;
+            for (Part q = 0; q < y.num_parts(d); ++q) {
+                std::vector<Part> got(y.incident(h, q).begin(), y.incident(h, q).end());
+                std::sort(got.begin(), got.end());
+                std::vector<Part> expect;
+                for (Part p = 0; p < y.num_parts(t->hom(h).dom); ++p) {
+                    if (y.subpart(h, p) == q) {
+                        expect.push_back(p);
+                    }
+                }
+                EXPECT_EQ(got, expect);
+            }
+        }
+        for (std::uint32_t j = 0; j < y.num_vars(wt2); ++j) {
+            std::size_t cells = 0;
+            for (Part p = 0; p < ne; ++p) {
+                cells += y.subpart(w2, p) == Value::var(j) ? 1 : 0;
+            }
+            EXPECT_EQ(y.var_incident(wt2, j).size(), cells);
+        }
+        // Morphisms still migrate through the tuples (plain: the same components).
+        auto id = migrate(m, hom::identity(x), out, out);
+        ASSERT_TRUE(id);
+        EXPECT_EQ(*id, hom::identity(y));
+        auto origins = tuple_origins(m, out, e2);
+        ASSERT_TRUE(origins);
+        EXPECT_EQ(origins->parts.size(), ne);
+    }
+}
+
 // ---- composition of maps -----------------------------------------------------------------------
 
 TEST(Compose, DeltaThenConjunctiveAndBack) {

@@ -332,7 +332,7 @@ std::optional<std::size_t> first_object_node(const Query& q) {
     return std::nullopt;
 }
 
-// A value of X's attribute type T, as a value of the migrated state's type T' (same numbers).
+// The part reached from p along a path of X's homs, or kNoPart once a hom on the way is unset.
 Part follow(const ACSet& x, Part p, const std::vector<HomId>& homs) {
     for (HomId h : homs) {
         if (p == kNoPart) {
@@ -341,6 +341,51 @@ Part follow(const ACSet& x, Part p, const std::vector<HomId>& homs) {
         p = x.subpart(h, p);
     }
     return p;
+}
+
+// The column of a path of X's homs out of an object with n parts: p goes to follow(x, p, path).
+// Composed a column at a time: a copy of the first hom's column, then one gather per further hom.
+std::vector<Part> path_column(const ACSet& x, std::size_t n, const std::vector<HomId>& path) {
+    std::vector<Part> col;
+    if (path.empty()) {
+        col.resize(n);
+        std::iota(col.begin(), col.end(), Part{0});
+        return col;
+    }
+    std::span<const Part> first = x.column(path[0]);
+    CATPLAN_ASSERT(first.size() == n, "a delta hom starts at the tuples' object");
+    col.assign(first.begin(), first.end());
+    for (std::size_t k = 1; k < path.size(); ++k) {
+        std::span<const Part> next = x.column(path[k]);
+        for (Part& p : col) {
+            p = p == kNoPart ? kNoPart : next[p];
+        }
+    }
+    return col;
+}
+
+// The names of the tuples at c: tuple i is named after the part of X assigned to the query's
+// first object variable. Empty (no names) when X names no part of that variable's object.
+std::vector<Symbol> tuple_names(const Query& q, const Tuples& tu, const ACSet& x) {
+    std::vector<Symbol> names;
+    auto n = first_object_node(q);
+    if (!n || tu.count == 0) {
+        return names;
+    }
+    QueryElement el = q.locate_node(*n);
+    std::span<const Symbol> from = x.part_names(el.ob);
+    if (from.empty()) {
+        return names;
+    }
+    if (tu.mode == Tuples::Mode::Plain) {
+        names.assign(from.begin(), from.end());
+        return names;
+    }
+    names.resize(tu.count);
+    for (std::size_t i = 0; i < tu.count; ++i) {
+        names[i] = from[tu.part(i, el.ob, el.part)];
+    }
+    return names;
 }
 
 } // namespace
@@ -360,7 +405,7 @@ MigratedState migrate_state(const SchemaMap& f, const ACSet& x) {
             }
         }
     }
-    // Tuples and parts.
+    // Tuples and parts; then every column is written whole with set_column.
     for (std::uint32_t c = 0; c < t.num_obs(); ++c) {
         const Query& q = f.query(ObId(c));
         auto tu = std::make_unique<Tuples>();
@@ -373,15 +418,9 @@ MigratedState migrate_state(const SchemaMap& f, const ACSet& x) {
         } else if (!scan(q, x, *tu)) {
             general(q, x, *tu);
         }
-        Part first = y.add_parts(ObId(c), tu->count);
-        if (auto n = first_object_node(q); n && tu->count > 0) {
-            QueryElement el = q.locate_node(*n);
-            for (std::size_t i = 0; i < tu->count; ++i) {
-                std::string_view name = x.part_name(el.ob, tu->part(i, el.ob, el.part));
-                if (!name.empty()) {
-                    y.set_part_name(ObId(c), first + static_cast<Part>(i), name);
-                }
-            }
+        y.add_parts(ObId(c), tu->count);
+        if (std::vector<Symbol> names = tuple_names(q, *tu, x); !names.empty()) {
+            y.set_part_names(ObId(c), std::move(names));
         }
         out.tuples[c] = std::move(tu);
     }
@@ -396,30 +435,25 @@ MigratedState migrate_state(const SchemaMap& f, const ACSet& x) {
         }
         const HomImage& im = f.hom_image(fh);
         if (im.path) {
-            const std::vector<HomId>& path = *im.path;
-            if (path.size() == 1) {
-                std::span<const Part> col = x.column(path[0]);
-                for (Part p = 0; p < tc.count; ++p) {
-                    y.set_subpart(fh, p, col[p]);
-                }
+            // Between plain queries: tuples are X's parts, so the column is the path's (for a
+            // single hom, its column in X, copied straight across).
+            if (im.path->size() == 1) {
+                y.set_column(fh, x.column(im.path->front()));
             } else {
-                for (Part p = 0; p < tc.count; ++p) {
-                    y.set_subpart(fh, p, follow(x, p, path));
-                }
+                y.set_column(fh, path_column(x, tc.count, *im.path));
             }
             continue;
         }
         const ACSetMorphism& qf = *im.morphism;
-        const Query& qc = f.query(c);
         const Query& qd = f.query(d);
         bool single = td.mode == Tuples::Mode::Plain || td.mode == Tuples::Mode::Scan;
         std::optional<std::size_t> dn = first_object_node(qd);
+        std::vector<Part> col(tc.count, kNoPart);
         for (std::size_t i = 0; i < tc.count; ++i) {
-            Part image = kNoPart;
             if (single && dn) {
                 QueryElement el = qd.locate_node(*dn);
                 Part p = tc.part(i, el.ob, qf(el.ob, el.part));
-                image = td.mode == Tuples::Mode::Plain ? p : td.scan_index[p];
+                col[i] = td.mode == Tuples::Mode::Plain ? p : td.scan_index[p];
             } else {
                 Key k;
                 for (std::size_t n = 0; n < qd.nodes().size(); ++n) {
@@ -434,12 +468,11 @@ MigratedState migrate_state(const SchemaMap& f, const ACSet& x) {
                     }
                 }
                 if (auto found = find_tuple(qd, td, k)) {
-                    image = *found;
+                    col[i] = *found;
                 }
             }
-            (void)qc;
-            y.set_subpart(fh, static_cast<Part>(i), image);
         }
+        y.set_column(fh, col);
     }
     // Attributes.
     for (std::uint32_t a = 0; a < t.num_attrs(); ++a) {
@@ -447,27 +480,53 @@ MigratedState migrate_state(const SchemaMap& f, const ACSet& x) {
         ObId c = t.attr(fa).dom;
         const Tuples& tc = *out.tuples[c.index()];
         const AttrImage& im = f.attr_image(fa);
-        for (std::size_t i = 0; i < tc.count; ++i) {
-            Value v;
-            switch (im.kind) {
-            case AttrImage::Kind::None:
-                break;
-            case AttrImage::Kind::Constant:
-                v = im.constant;
-                break;
-            case AttrImage::Kind::Value:
-                v = im.value.is_var() ? tc.var(i, im.type, im.value.var_index()) : im.value;
-                break;
-            case AttrImage::Kind::Path: {
-                Part p = follow(x, tc.part(i, im.start_ob, im.start), im.homs);
-                if (p != kNoPart) {
-                    v = x.subpart(im.attr, p);
+        if (tc.count == 0 || im.kind == AttrImage::Kind::None) {
+            continue; // add_parts left the column unset
+        }
+        std::vector<Value> col;
+        switch (im.kind) {
+        case AttrImage::Kind::None:
+            break;
+        case AttrImage::Kind::Constant:
+            col.assign(tc.count, im.constant);
+            break;
+        case AttrImage::Kind::Value:
+            if (im.value.is_var()) {
+                col.resize(tc.count);
+                for (std::size_t i = 0; i < tc.count; ++i) {
+                    col[i] = tc.var(i, im.type, im.value.var_index());
+                }
+            } else {
+                col.assign(tc.count, im.value);
+            }
+            break;
+        case AttrImage::Kind::Path: {
+            std::span<const Value> from = x.column(im.attr);
+            if (tc.mode == Tuples::Mode::Plain && im.homs.empty()) {
+                // Tuples are X's parts: the attribute's column, copied straight across.
+                CATPLAN_ASSERT(from.size() == tc.count,
+                               "a delta attribute starts at the tuples' object");
+                y.set_column(fa, from);
+                continue;
+            }
+            col.resize(tc.count);
+            if (tc.mode == Tuples::Mode::Plain) {
+                std::vector<Part> parts = path_column(x, tc.count, im.homs);
+                for (std::size_t i = 0; i < tc.count; ++i) {
+                    col[i] = parts[i] == kNoPart ? Value() : from[parts[i]];
                 }
                 break;
             }
+            for (std::size_t i = 0; i < tc.count; ++i) {
+                Part p = follow(x, tc.part(i, im.start_ob, im.start), im.homs);
+                if (p != kNoPart) {
+                    col[i] = from[p];
+                }
             }
-            y.set_subpart(fa, static_cast<Part>(i), v);
+            break;
         }
+        }
+        y.set_column(fa, col);
     }
     return out;
 }
