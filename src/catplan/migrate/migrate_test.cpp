@@ -1007,6 +1007,39 @@ TEST(Compose, DeltaThenConjunctiveAndBack) {
     EXPECT_FALSE(compose(paths, paths));
 }
 
+TEST(Compose, PlainEntriesStayPlainAfterADeltaMap) {
+    // Graph -> LoopedGraph (V, E plain; Loop the edges whose ends agree, a query) after the
+    // reverse map: V, E and src, tgt must stay a plain object and paths in the composite.
+    Graph g = graph_schema(false);
+    auto looped = std::make_shared<Schema>("LoopedGraph");
+    ObId v = looped->add_ob("V"), e = looped->add_ob("E"), loop = looped->add_ob("Loop");
+    HomId src = looped->add_hom("src", e, v), tgt = looped->add_hom("tgt", e, v);
+    HomId at = looped->add_hom("at", loop, v);
+    SchemaMap second(looped, g.s);
+    second.map_ob(v, g.v);
+    second.map_ob(e, g.e);
+    second.map_hom_path(src, {g.src});
+    second.map_hom_path(tgt, {g.tgt});
+    Query q(g.s);
+    q.add_variable("l", g.e);
+    q.add_equation(Term::path("l", {g.src}), Term::path("l", {g.tgt}));
+    second.map_ob(loop, std::move(q));
+    second.map_hom(at, {Term::path("l", {g.src})});
+    ASSERT_TRUE(errors_of(second.finish()).empty());
+    SchemaMap rev = reverse_map(g);
+    auto c = compose(rev, second);
+    ASSERT_TRUE(c) << c.error();
+    EXPECT_FALSE(c->is_delta());
+    EXPECT_TRUE(c->query(e).is_plain());
+    ASSERT_TRUE(c->hom_image(src).path);
+    EXPECT_EQ(*c->hom_image(src).path, std::vector<HomId>{g.tgt}); // reversed
+    Gen gen(5);
+    for (int i = 0; i < 20; ++i) {
+        ACSet x = gen.graph(g, 4, 8);
+        EXPECT_TRUE(hom::is_isomorphic(migrate(*c, x), migrate(second, migrate(rev, x))));
+    }
+}
+
 TEST(Compose, CaseStudyThroughAnAbstractDomain) {
     // ColorBlocksworld -> Kitchenworld, then Kitchenworld -> a plain "Stack" domain by delta.
     Blocks b = blocks_schema();
