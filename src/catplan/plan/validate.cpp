@@ -2,6 +2,7 @@
 
 #include "catplan/rewrite/dpo.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <fmt/format.h>
 
@@ -227,8 +228,13 @@ std::string describe_match(const ACSetMorphism& m, const ACSet& l, const ACSet& 
     std::vector<std::string> items;
     for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
         for (Part p = 0; p < l.num_parts(ObId(o)); ++p) {
-            items.push_back(fmt::format("{} ↦ {}", l.part_label(ObId(o), p),
-                                        x.part_label(ObId(o), m.components[o][p])));
+            std::string item = fmt::format("{} ↦ {}", l.part_label(ObId(o), p),
+                                           x.part_label(ObId(o), m.components[o][p]));
+            // Once each: a migrated rule has a part per target type of a source part, all
+            // named alike (block ↦ bread2 for its Object and its Receptacle).
+            if (std::find(items.begin(), items.end(), item) == items.end()) {
+                items.push_back(std::move(item));
+            }
         }
     }
     for (std::uint32_t t = 0; t < s.num_attr_types(); ++t) {

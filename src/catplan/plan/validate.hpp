@@ -42,7 +42,8 @@ std::optional<std::string> explain_no_embedding(const ACSet& pattern, const ACSe
 /// the reason there is none, naming the first goal statement that cannot be satisfied.
 Result<ACSetMorphism> embed_goal(const ACSet& goal, const ACSet& x);
 
-/// "block ↦ E, underblock ↦ D, o ↦ x1": each part (and variable) of l with its image in x.
+/// "block ↦ E, underblock ↦ D, o ↦ x1": each part (and variable) of l with its image in x, each
+/// such binding once.
 std::string describe_match(const ACSetMorphism& m, const ACSet& l, const ACSet& x);
 
 struct ValidateOptions {
