@@ -59,6 +59,21 @@ TEST(GoalSatisfaction, StatementsInWords) {
                                         "on_r(o1) == b"}));
 }
 
+TEST(GoalSatisfaction, UnnamedPartsAreNamedByATermThatReachesThem) {
+    Towers t = towers();
+    ACSet g(t.s);
+    Part a = g.add_part(t.block, "a");
+    Part below = g.add_part(t.block); // unnamed: reached as on_r(o1)
+    Part o = g.add_part(t.on, "o1");
+    g.set_subpart(t.on_l, o, a);
+    g.set_subpart(t.on_r, o, below);
+    g.set_subpart(t.color, below, Value::string("red"));
+    // The term is not used for the statement that defines it, which keeps the label.
+    EXPECT_EQ(goal_statements(g), (std::vector<std::string>{
+                                      "Block a", "Block on_r(o1)", "hasColor(on_r(o1)) == \"red\"",
+                                      "On o1", "on_l(o1) == a", "on_r(o1) == #2"}));
+}
+
 TEST(GoalSatisfaction, EmbeddedGoalIsFullySatisfied) {
     Towers t = towers();
     ACSet g = tower(t, {{"a", "red"}, {"b", "green"}}, {{0, 1}});
