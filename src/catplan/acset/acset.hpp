@@ -114,7 +114,7 @@ public:
     /// The name of a part, or "" when it has none.
     std::string_view part_name(ObId x, Part p) const {
         const auto& names = names_[x.index()];
-        return names.empty() ? std::string_view() : text(names[p]);
+        return names.empty() ? std::string_view() : names[p].str();
     }
 
     void set_part_name(ObId x, Part p, std::string_view name);
@@ -131,7 +131,7 @@ public:
     std::optional<Part> find_part(ObId x, std::string_view name) const;
 
     std::string_view var_name(AttrTypeId t, std::uint32_t j) const {
-        return text(var_names_[t.index()][j]);
+        return var_names_[t.index()][j].str();
     }
 
     void set_var_name(AttrTypeId t, std::uint32_t j, std::string_view name);
@@ -147,9 +147,6 @@ public:
     friend bool operator==(const ACSet& a, const ACSet& b);
 
 private:
-    // The text of a name; the empty name is answered without locking the symbol table.
-    static std::string_view text(Symbol s) { return s == Symbol() ? std::string_view() : s.str(); }
-
     struct Preimage {
         std::vector<std::vector<Part>> lists; // by target part
         std::vector<std::uint32_t> pos;       // position of each source part in its list

@@ -5,8 +5,34 @@
 
 #include <gtest/gtest.h>
 
+#include <string>
+#include <thread>
+#include <vector>
+
 namespace catplan {
 namespace {
+
+TEST(Symbol, TextsStayReadableAcrossManyChunksAndThreads) {
+    // Two threads intern 20,000 texts each (several chunks of the table) while reading back
+    // what they interned; then every text is read again.
+    auto work = [](int thread, std::vector<Symbol>& out) {
+        for (int i = 0; i < 20000; ++i) {
+            std::string text = "t" + std::to_string(thread) + "_" + std::to_string(i);
+            out.push_back(Symbol::intern(text));
+            ASSERT_EQ(out.back().str(), text);
+        }
+    };
+    std::vector<Symbol> a, b;
+    std::thread t0(work, 0, std::ref(a));
+    std::thread t1(work, 1, std::ref(b));
+    t0.join();
+    t1.join();
+    for (int i = 0; i < 20000; ++i) {
+        EXPECT_EQ(a[i].str(), "t0_" + std::to_string(i));
+        EXPECT_EQ(b[i].str(), "t1_" + std::to_string(i));
+        EXPECT_EQ(Symbol::intern("t1_" + std::to_string(i)), b[i]);
+    }
+}
 
 TEST(Symbol, InterningGivesEqualHandlesForEqualText) {
     EXPECT_EQ(Symbol::intern("red"), Symbol::intern("red"));

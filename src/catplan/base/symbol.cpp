@@ -1,16 +1,45 @@
 #include "catplan/base/symbol.hpp"
 
-#include <deque>
+#include "catplan/base/assert.hpp"
+
+#include <array>
+#include <atomic>
+#include <memory>
 #include <mutex>
 #include <unordered_map>
 
 namespace catplan {
 namespace {
 
+// Texts live in chunks of kChunk strings that never move, so str() reads without locking: a
+// Symbol's text was written, under the mutex, before the Symbol was handed out, and its chunk
+// pointer is published with release and read with acquire. intern() locks.
+constexpr std::uint32_t kChunkBits = 12;
+constexpr std::uint32_t kChunk = 1u << kChunkBits;
+constexpr std::uint32_t kMaxChunks = 1u << 20;
+
 struct SymbolTable {
     std::mutex mutex;
-    std::deque<std::string> texts{std::string()}; // deque: stable addresses for the views below
-    std::unordered_map<std::string_view, std::uint32_t> ids{{std::string_view(), 0}};
+    std::array<std::atomic<std::string*>, kMaxChunks> chunks{};
+    std::uint32_t size = 0;
+    std::unordered_map<std::string_view, std::uint32_t> ids;
+
+    SymbolTable() { add(std::string_view()); } // id 0 is the empty string
+
+    std::uint32_t add(std::string_view text) {
+        std::uint32_t id = size;
+        std::uint32_t c = id >> kChunkBits;
+        CATPLAN_ASSERT(c < kMaxChunks, "the symbol table is full");
+        std::string* chunk = chunks[c].load(std::memory_order_relaxed);
+        if (chunk == nullptr) {
+            chunk = new std::string[kChunk]; // owned by the table for the life of the process
+            chunks[c].store(chunk, std::memory_order_release);
+        }
+        chunk[id & (kChunk - 1)] = std::string(text);
+        ids.emplace(chunk[id & (kChunk - 1)], id);
+        ++size;
+        return id;
+    }
 };
 
 SymbolTable& table() {
@@ -26,16 +55,15 @@ Symbol Symbol::intern(std::string_view text) {
     if (auto it = t.ids.find(text); it != t.ids.end()) {
         return Symbol(it->second);
     }
-    auto id = static_cast<std::uint32_t>(t.texts.size());
-    t.texts.emplace_back(text);
-    t.ids.emplace(t.texts.back(), id);
-    return Symbol(id);
+    return Symbol(t.add(text));
 }
 
 std::string_view Symbol::str() const {
-    auto& t = table();
-    std::lock_guard lock(t.mutex);
-    return t.texts[id_];
+    if (id_ == 0) {
+        return {};
+    }
+    const std::string* chunk = table().chunks[id_ >> kChunkBits].load(std::memory_order_acquire);
+    return chunk[id_ & (kChunk - 1)];
 }
 
 } // namespace catplan
