@@ -86,6 +86,22 @@ const lang::Declaration* find_declaration(const lang::Module& m, const std::stri
 }
 
 // A rule declared at top level or inside a domain of the module.
+std::shared_ptr<const acset::ACSet> find_target_goal(const lang::Module& m, const std::string& file,
+                                                     const std::string& name,
+                                                     const schema::SchemaPtr& target,
+                                                     std::ostream& err) {
+    const auto* g = find_declaration(m, file, name, lang::DeclKind::Instance, err);
+    if (g == nullptr) {
+        return nullptr;
+    }
+    if (g->schema != target) {
+        error(err, fmt::format("goal '{}' is on {}, not on the map's target {}", name,
+                               g->schema->name(), target->name()));
+        return nullptr;
+    }
+    return g->instance;
+}
+
 const rewrite::Rule* find_rule(const lang::Module& m, const std::string& name) {
     for (const auto& d : m.declarations()) {
         if (d.kind == lang::DeclKind::Rule && d.name == name) {

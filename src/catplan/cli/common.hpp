@@ -11,6 +11,7 @@
 
 #include <functional>
 #include <iosfwd>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -65,6 +66,13 @@ plan::ProblemPtr load_problem(Session& s, const std::string& file, const std::st
 plan::ProblemPtr find_problem(const lang::Module& m, const std::string& file,
                               const std::string& domain_name, const std::string& problem_name,
                               std::ostream& err);
+
+/// The instance `name` of a loaded module as a goal on `target` (a map's target schema: the goal
+/// intended in the target domain); nullptr with the error printed.
+std::shared_ptr<const acset::ACSet> find_target_goal(const lang::Module& m, const std::string& file,
+                                                     const std::string& name,
+                                                     const schema::SchemaPtr& target,
+                                                     std::ostream& err);
 
 /// The subcommands and what runs each when it is the one parsed.
 class CommandTable {

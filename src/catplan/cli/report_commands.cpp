@@ -14,7 +14,7 @@ namespace catplan::cli {
 namespace {
 
 struct ReportArgs {
-    std::string file, map, domain, problem, plan_file, output;
+    std::string file, map, domain, problem, plan_file, goal, output;
     bool replan = false, rename_by_type = false, lr = false, no_timing = false;
     std::string search = "bfs", heuristic = "hff";
     double max_time = 60;
@@ -25,6 +25,7 @@ struct ReportInputs {
     std::shared_ptr<const migrate::SchemaMap> map;
     plan::ProblemPtr problem;
     plan::Plan plan;
+    std::shared_ptr<const acset::ACSet> target_goal; // --goal
 };
 
 // The problem of the loaded module (loading FILE again would make new schemas, which the map
@@ -67,6 +68,12 @@ std::optional<ReportInputs> load_inputs(Session& s, const ReportArgs& a, std::os
                                in.problem->domain->schema->name()));
         return std::nullopt;
     }
+    if (!a.goal.empty()) {
+        in.target_goal = find_target_goal(*m, a.file, a.goal, in.map->target(), err);
+        if (in.target_goal == nullptr) {
+            return std::nullopt;
+        }
+    }
     auto f = s.sources.add_file(a.plan_file);
     if (!f) {
         error(err, fmt::format("cannot read '{}'", a.plan_file));
@@ -99,6 +106,18 @@ int cmd_report(const ReportArgs& a, std::ostream& out, std::ostream& err) {
     r.transfer_peak_kib = transfer::peak_rss_kib();
     r.no_timing = a.no_timing;
     r.dot.left_to_right = a.lr;
+    bool valid = t.valid;
+    std::string reason = t.reason;
+    if (in->target_goal && t.final_state) {
+        // The verdict is about the goal intended in the target domain, as `transfer --goal`.
+        r.goal = transfer::goal_satisfaction(*in->target_goal, *t.final_state);
+        if (valid && r.goal->satisfied < r.goal->total) {
+            valid = false;
+            reason = fmt::format("the intended goal {} is not satisfied", a.goal);
+        }
+        r.valid = valid;
+        r.reason = reason;
+    }
     std::optional<transfer::Replan> rp;
     if (a.replan) {
         plan::SearchOptions so;
@@ -113,9 +132,9 @@ int cmd_report(const ReportArgs& a, std::ostream& out, std::ostream& err) {
         return rc;
     }
     if (!a.output.empty()) {
-        out << fmt::format("{}: {}\n", a.output, t.valid ? "valid" : "invalid: " + t.reason);
+        out << fmt::format("{}: {}\n", a.output, valid ? "valid" : "invalid: " + reason);
     }
-    return t.valid ? kOk : kNo;
+    return valid ? kOk : kNo;
 }
 
 } // namespace
@@ -133,6 +152,9 @@ void add_report_commands(CLI::App& app, CommandTable& table) {
     cmd->add_option("--domain", a->domain, "the source domain (default: the problem's)");
     cmd->add_option("--problem", a->problem, "the source problem")->required();
     cmd->add_option("--plan", a->plan_file, "the source plan: one step per line")->required();
+    cmd->add_option("--goal", a->goal,
+                    "an instance of the target schema: the goal intended in the target domain "
+                    "(default: the migrated source goal)");
     cmd->add_flag("--rename-by-type", a->rename_by_type,
                   "name target parts after their type (bread1, tomato1, ...)");
     cmd->add_flag("--replan", a->replan,

@@ -56,16 +56,10 @@ std::optional<TransferInputs> load_inputs(Session& s, const TransferArgs& a, std
         return std::nullopt;
     }
     if (!a.goal.empty()) {
-        const auto* g = find_declaration(*m, a.file, a.goal, lang::DeclKind::Instance, err);
-        if (g == nullptr) {
+        in.target_goal = find_target_goal(*m, a.file, a.goal, in.map->target(), err);
+        if (in.target_goal == nullptr) {
             return std::nullopt;
         }
-        if (g->schema != in.map->target()) {
-            error(err, fmt::format("goal '{}' is on {}, not on the map's target {}", a.goal,
-                                   g->schema->name(), in.map->target()->name()));
-            return std::nullopt;
-        }
-        in.target_goal = g->instance;
     }
     auto f = s.sources.add_file(a.plan_file);
     if (!f) {

@@ -310,7 +310,8 @@ std::string steps_section(const ReportInput& in, Pictures& pictures) {
          "Its match is the source match carried through part names: every part of the migrated "
          "precondition is named after the source part its tuple starts at, so the target match "
          "binds the target parts named like the source parts that the source match binds. "
-         "Bold bindings are the parts both matches bind; open a step to see the states before "
+         "Bold bindings are those of the generators both actions have (the parts the map carries); "
+         "open a step to see the states before "
          "and after it on both sides.</p>\n";
     o += fmt::format("<table class=\"steps\"><tr><th>#</th><th>source step ({})</th>"
                      "<th>target step ({})</th></tr>\n",

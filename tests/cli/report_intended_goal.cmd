@@ -1,0 +1,1 @@
+report examples/colorblocks_to_kitchen/swapped_map.cp --map SwappedToKitchen --problem CaseStudy --plan examples/colorblocksworld/paper.plan --goal Sandwich --no-timing -o build/report_swapped_goal.html
