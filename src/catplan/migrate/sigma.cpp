@@ -303,7 +303,11 @@ Result<ACSet> sigma(const SchemaMap& f, const ACSet& y, std::size_t max_parts) {
             if (v.is_unset()) {
                 continue;
             }
-            std::uint32_t cell = c.cell(c.walk(node[dom.index()][p], im.homs), im.attr);
+            std::uint32_t end = c.walk(node[dom.index()][p], im.homs);
+            if (c.failed()) {
+                break;
+            }
+            std::uint32_t cell = c.cell(end, im.attr);
             if (v.is_concrete()) {
                 c.merge_values(cell, c.new_value(f.source()->attr(im.attr).codom, v));
                 continue;

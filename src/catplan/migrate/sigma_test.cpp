@@ -230,6 +230,30 @@ TEST(Sigma, ACycleOfHomsMakesSigmaInfinite) {
     EXPECT_NE(r.error().find("infinite"), std::string::npos) << r.error();
 }
 
+TEST(Sigma, TheLimitStopsAWalkAlongAnAttributePath) {
+    auto chain = std::make_shared<Schema>("Chain");
+    ObId n = chain->add_ob("N");
+    HomId next = chain->add_hom("next", n, n);
+    AttrTypeId lt = chain->add_attr_type("Label", ValueKind::String);
+    AttrId label = chain->add_attr("label", n, lt);
+    auto point = std::make_shared<Schema>("Point");
+    ObId p = point->add_ob("P");
+    AttrTypeId pt = point->add_attr_type("Label", ValueKind::String);
+    AttrId plabel = point->add_attr("far", p, pt);
+    SchemaMap m(point, chain);
+    m.map_ob(p, n);
+    m.map_attr_type(pt, lt);
+    m.map_attr(plabel, Term::path("P", {next, next, next}, label));
+    m = finished(std::move(m));
+    ACSet y(point);
+    y.add_parts(p, 2);
+    y.set_subpart(plabel, 0, Value::string("a"));
+    y.set_subpart(plabel, 1, Value::string("b"));
+    auto r = sigma(m, y, 3); // the first walk needs 4 parts
+    ASSERT_FALSE(r);
+    EXPECT_NE(r.error().find("more than 3 parts"), std::string::npos) << r.error();
+}
+
 ACSet random_graph(const SchemaPtr& s, ObId v, ObId e, HomId src, HomId tgt, std::mt19937_64& rng,
                    std::size_t max_v, std::size_t max_e) {
     ACSet y(s);
