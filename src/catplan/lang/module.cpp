@@ -5,6 +5,7 @@
 #include "catplan/hom/hom_search.hpp"
 #include "catplan/lang/detail/map_elaboration.hpp"
 #include "catplan/lang/syntax.hpp"
+#include "catplan/migrate/migration.hpp"
 #include "catplan/migrate/schema_map.hpp"
 #include "catplan/rewrite/rule.hpp"
 
@@ -200,7 +201,8 @@ private:
     void elaborate_file(const ParsedFile& parsed, bool imported) {
         // Schemas first, then kinds are inferred from every literal of the file, then instances:
         // so the order of declarations in a file does not change the meaning.
-        std::vector<const MacroCall*> instances, rules, domains, problems, maps, composites;
+        std::vector<const MacroCall*> instances, rules, domains, problems, maps, composites,
+            migrations;
         for (const auto& form : parsed.forms) {
             if (form.name == "import") {
                 continue;
@@ -215,6 +217,8 @@ private:
                 rules.push_back(&form);
             } else if (form.name == "compose") {
                 composites.push_back(&form);
+            } else if (form.name == "migrate") {
+                migrations.push_back(&form);
             } else if (form.name == "domain") {
                 domains.push_back(&form);
             } else if (form.name == "problem") {
@@ -222,8 +226,8 @@ private:
             } else {
                 sink_->error(form.name_range,
                              fmt::format("unknown macro '@{}' (expected @present, @acset_colim, "
-                                         "@acset, @rule, @migration, @compose, @domain, "
-                                         "@problem or @import)",
+                                         "@acset, @rule, @migration, @compose, @migrate, "
+                                         "@domain, @problem or @import)",
                                          form.name));
             }
         }
@@ -300,6 +304,10 @@ private:
         }
         for (const auto* form : composites) {
             elaborate_compose(*form, imported);
+        }
+        // Migrated instances refer to instances above and make instances.
+        for (const auto* form : migrations) {
+            elaborate_migrate(*form, imported);
         }
         local_schemas_.clear();
     }
@@ -2543,6 +2551,50 @@ private:
             return nullptr;
         }
         return d;
+    }
+
+    // `Name = @migrate Target X begin ... end` (or `@migrate Name(Target, X) begin ... end`):
+    // the instance X migrated along the map the body gives, as DataMigrations' @migrate builds
+    // a map and runs it at once.
+    void elaborate_migrate(const MacroCall& form, bool imported) {
+        detail::MapForm mf;
+        const Expr *target = nullptr, *source = nullptr;
+        if (!binary_header(form, "'Name = @migrate Target Instance begin ... end'", mf.name,
+                           mf.name_range, target, source)) {
+            return;
+        }
+        const Declaration* x = module_.find(source->text);
+        if (x == nullptr || x->kind != DeclKind::Instance) {
+            sink_->error(source->range, x == nullptr
+                                            ? fmt::format("unknown instance '{}'", source->text)
+                                            : fmt::format("'{}' is not an instance", source->text));
+            return;
+        }
+        if (!form.has_body) {
+            sink_->error(form.range, fmt::format("'{}' needs the map's entries: '{} = @migrate "
+                                                 "{} {} begin ... end'",
+                                                 mf.name, mf.name, target->text, source->text));
+            return;
+        }
+        auto t = lookup_schema(*target, false);
+        if (!t || broken_.count(t.get())) {
+            return;
+        }
+        mf.target = t;
+        mf.source = x->schema;
+        mf.body = &form.body;
+        auto map = detail::elaborate_map(mf, *sink_);
+        if (!map || !claim_name(mf.name, mf.name_range)) {
+            return;
+        }
+        Declaration d;
+        d.kind = DeclKind::Instance;
+        d.name = mf.name;
+        d.range = mf.name_range;
+        d.imported = imported;
+        d.schema = t;
+        d.instance = std::make_shared<const ACSet>(migrate::migrate(*map, *x->instance));
+        module_.add(std::move(d));
     }
 
     // `@compose H(F, G)`: H = F ∘ G as functors, so Δ_H migrates along F, then along G.

@@ -562,6 +562,19 @@ std::vector<MapProblem> SchemaMap::finish() {
     auto dom_empty = [&](ObId c) {
         return obs_[c.index()].query && obs_[c.index()].query->is_empty();
     };
+    // A hom into the unit query (@unit, no variables) has exactly one image, the query morphism
+    // that sends nothing anywhere: it need not be written (as in DataMigrations).
+    auto is_unit = [&](ObId c) {
+        const auto& q = obs_[c.index()].query;
+        return q && !q->is_empty() && q->nodes().empty();
+    };
+    for (std::uint32_t i = 0; i < t.num_homs(); ++i) {
+        if (!homs_[i].set && is_unit(t.hom(HomId(i)).codom)) {
+            homs_[i].set = true;
+            homs_[i].terms = std::vector<Term>{};
+            homs_[i].path.reset();
+        }
+    }
     for (std::uint32_t i = 0; i < t.num_homs(); ++i) {
         if (!homs_[i].set && !dom_empty(t.hom(HomId(i)).dom)) {
             out.push_back({Severity::Error,
