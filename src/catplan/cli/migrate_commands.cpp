@@ -4,6 +4,7 @@
 #include "catplan/acset/printer.hpp"
 #include "catplan/cli/commands.hpp"
 #include "catplan/cli/common.hpp"
+#include "catplan/json/json.hpp"
 #include "catplan/migrate/migration.hpp"
 #include "catplan/migrate/sigma.hpp"
 
@@ -16,9 +17,17 @@ namespace catplan::cli {
 namespace {
 
 struct MigrateArgs {
-    std::string file, map, state, output;
+    std::string file, map, state, output, format = "text";
     bool sigma = false;
 };
+
+// The state as the command prints it: a heading and tables, or Catlab's ACSet JSON.
+std::string state_text(const MigrateArgs& a, const std::string& heading, const acset::ACSet& y) {
+    if (a.format == "json") {
+        return json::write_acset(y, /*pretty=*/true) + "\n";
+    }
+    return heading + acset::to_tables(y);
+}
 
 // The map `name` of a loaded module; nullptr with an error on err.
 const migrate::SchemaMap* find_map(const lang::Module& m, const std::string& file,
@@ -40,9 +49,10 @@ int push_forward(const MigrateArgs& a, const migrate::SchemaMap& f, const lang::
         error(err, fmt::format("cannot push '{}' along '{}': {}", a.state, a.map, y.error()));
         return kUnsupported;
     }
-    std::string text = fmt::format("instance {} pushed along {} (Σ), on {}\n", a.state, a.map,
-                                   f.source()->name()) +
-                       acset::to_tables(*y);
+    std::string text = state_text(
+        a,
+        fmt::format("instance {} pushed along {} (Σ), on {}\n", a.state, a.map, f.source()->name()),
+        *y);
     return emit(text, a.output, out, err);
 }
 
@@ -66,9 +76,10 @@ int cmd_migrate(const MigrateArgs& a, std::ostream& out, std::ostream& err) {
         return kBadInput;
     }
     acset::ACSet y = migrate::migrate(*f, *x->instance);
-    std::string text =
-        fmt::format("instance {} migrated along {}, on {}\n", a.state, a.map, f->target()->name()) +
-        acset::to_tables(y);
+    std::string text = state_text(
+        a,
+        fmt::format("instance {} migrated along {}, on {}\n", a.state, a.map, f->target()->name()),
+        y);
     return emit(text, a.output, out, err);
 }
 
@@ -137,6 +148,11 @@ void add_migrate_commands(CLI::App& app, CommandTable& table) {
         ->required();
     migrate_cmd->add_option("-o,--output", migrate_args->output,
                             "write to this file instead of stdout");
+    migrate_cmd
+        ->add_option("--format", migrate_args->format,
+                     "text (tables) or json (Catlab's ACSet JSON)")
+        ->check(CLI::IsMember({"text", "json"}))
+        ->capture_default_str();
     migrate_cmd->add_flag(
         "--sigma", migrate_args->sigma,
         "push STATE, on the map's target schema, to its source instead (Σ_F, "
