@@ -102,6 +102,21 @@ std::shared_ptr<const acset::ACSet> find_target_goal(const lang::Module& m, cons
     return g->instance;
 }
 
+Verdict judge(const transfer::TransferResult& t, const acset::ACSet* target_goal,
+              const std::string& goal_name) {
+    Verdict v;
+    v.goal = target_goal && t.final_state
+                 ? transfer::goal_satisfaction(*target_goal, *t.final_state)
+                 : t.goal;
+    v.valid = t.valid && v.goal.satisfied == v.goal.total;
+    if (!t.valid) {
+        v.reason = t.reason;
+    } else if (!v.valid) {
+        v.reason = fmt::format("the intended goal {} is not satisfied", goal_name);
+    }
+    return v;
+}
+
 const rewrite::Rule* find_rule(const lang::Module& m, const std::string& name) {
     for (const auto& d : m.declarations()) {
         if (d.kind == lang::DeclKind::Rule && d.name == name) {

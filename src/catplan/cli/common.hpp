@@ -8,6 +8,7 @@
 #include "catplan/lang/module.hpp"
 #include "catplan/plan/domain.hpp"
 #include "catplan/rewrite/rule.hpp"
+#include "catplan/transfer/transfer.hpp"
 
 #include <functional>
 #include <iosfwd>
@@ -73,6 +74,18 @@ std::shared_ptr<const acset::ACSet> find_target_goal(const lang::Module& m, cons
                                                      const std::string& name,
                                                      const schema::SchemaPtr& target,
                                                      std::ostream& err);
+
+/// A transfer's verdict: judged by the goal intended in the target domain when one is given
+/// (`--goal`), else by Δ_F(G) as the transfer checked it.
+struct Verdict {
+    transfer::GoalSatisfaction goal;
+    bool valid = false;
+    std::string reason; ///< why it is invalid ("" when valid)
+};
+
+/// The verdict on t; target_goal may be null (then goal_name is not used).
+Verdict judge(const transfer::TransferResult& t, const acset::ACSet* target_goal,
+              const std::string& goal_name);
 
 /// The subcommands and what runs each when it is the one parsed.
 class CommandTable {

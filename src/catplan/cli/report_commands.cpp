@@ -106,18 +106,11 @@ int cmd_report(const ReportArgs& a, std::ostream& out, std::ostream& err) {
     r.transfer_peak_kib = transfer::peak_rss_kib();
     r.no_timing = a.no_timing;
     r.dot.left_to_right = a.lr;
-    bool valid = t.valid;
-    std::string reason = t.reason;
-    if (in->target_goal && t.final_state) {
-        // The verdict is about the goal intended in the target domain, as `transfer --goal`.
-        r.goal = transfer::goal_satisfaction(*in->target_goal, *t.final_state);
-        if (valid && r.goal->satisfied < r.goal->total) {
-            valid = false;
-            reason = fmt::format("the intended goal {} is not satisfied", a.goal);
-        }
-        r.valid = valid;
-        r.reason = reason;
-    }
+    // The verdict is about the goal intended in the target domain, as `transfer --goal`.
+    Verdict v = judge(t, in->target_goal.get(), a.goal);
+    r.goal = v.goal;
+    r.valid = v.valid;
+    r.reason = v.reason;
     std::optional<transfer::Replan> rp;
     if (a.replan) {
         plan::SearchOptions so;
@@ -132,9 +125,9 @@ int cmd_report(const ReportArgs& a, std::ostream& out, std::ostream& err) {
         return rc;
     }
     if (!a.output.empty()) {
-        out << fmt::format("{}: {}\n", a.output, valid ? "valid" : "invalid: " + reason);
+        out << fmt::format("{}: {}\n", a.output, v.valid ? "valid" : "invalid: " + v.reason);
     }
-    return valid ? kOk : kNo;
+    return v.valid ? kOk : kNo;
 }
 
 } // namespace

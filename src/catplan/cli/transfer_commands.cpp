@@ -105,27 +105,17 @@ std::vector<plan::Step> target_steps(const transfer::TransferResult& t) {
     return out;
 }
 
-// The goal the verdict is about: --goal when given, else Δ_F(G).
-transfer::GoalSatisfaction intended_goal(const transfer::TransferResult& t,
-                                         const TransferInputs& in) {
-    if (!in.target_goal || !t.final_state) {
-        return t.goal;
-    }
-    return transfer::goal_satisfaction(*in.target_goal, *t.final_state);
-}
-
 // What the command measured around the library calls.
 struct Outcome {
     transfer::TransferResult t;
-    transfer::GoalSatisfaction goal; // of the intended goal
-    bool valid = false;
+    Verdict verdict; // by the intended goal
     long transfer_peak_kib = 0;
     std::optional<transfer::Replan> replan;
 };
 
 std::string text_report(const TransferArgs& a, const TransferInputs& in, const Outcome& r) {
     const auto& t = r.t;
-    const auto& goal = r.goal;
+    const auto& goal = r.verdict.goal;
     const auto& rp = r.replan;
     const auto& f = *in.map;
     std::string o;
@@ -160,9 +150,8 @@ std::string text_report(const TransferArgs& a, const TransferInputs& in, const O
         o += "a delta migration preserves pushouts: the transferred plan is valid by "
              "construction (paper Appendix A); checked anyway\n";
     }
-    o += r.valid ? "verdict: valid: every step applies and the goal embeds monically\n"
-                 : fmt::format("verdict: invalid: {}\n",
-                               t.valid ? "the intended goal is not satisfied" : t.reason);
+    o += r.verdict.valid ? "verdict: valid: every step applies and the goal embeds monically\n"
+                         : fmt::format("verdict: invalid: {}\n", r.verdict.reason);
     o += fmt::format("goal satisfaction: {}{}\n", percent(goal),
                      in.target_goal ? fmt::format(" (goal {})", a.goal) : std::string());
     for (const auto& u : goal.unsatisfied) {
@@ -212,16 +201,16 @@ nlohmann::json json_report(const TransferArgs& a, const TransferInputs& in, cons
     j["source_plan"] = plan_strings(in.plan->steps);
     j["source_valid"] = t.source_valid;
     j["target_plan"] = plan_strings(target_steps(t));
-    j["valid"] = r.valid;
+    j["valid"] = r.verdict.valid;
     j["failed_step"] = nullptr;
     if (t.failed_step) {
         j["failed_step"] = {{"index", t.failed_step->index}, {"reason", t.reason}};
-    } else if (!r.valid) {
-        j["reason"] = t.valid ? "the intended goal is not satisfied" : t.reason;
+    } else if (!r.verdict.valid) {
+        j["reason"] = r.verdict.reason;
     }
-    j["goal_satisfaction"] = r.goal.fraction();
-    j["goal_statements"] = r.goal.total;
-    j["unsatisfied"] = r.goal.unsatisfied;
+    j["goal_satisfaction"] = r.verdict.goal.fraction();
+    j["goal_statements"] = r.verdict.goal.total;
+    j["unsatisfied"] = r.verdict.goal.unsatisfied;
     j["migration"] = std::string(transfer::to_string(t.migration));
     // Δ_F preserves pushouts: each migrated step applies by construction (paper Appendix A).
     j["valid_by_construction"] = t.migration == transfer::MigrationKind::Delta;
@@ -270,8 +259,7 @@ int cmd_transfer(const TransferArgs& a, std::ostream& out, std::ostream& err) {
     Outcome r;
     r.t = transfer::transfer_plan(*in->map, *in->problem, *in->plan, options);
     r.transfer_peak_kib = transfer::peak_rss_kib();
-    r.goal = intended_goal(r.t, *in);
-    r.valid = r.t.valid && r.goal.satisfied == r.goal.total;
+    r.verdict = judge(r.t, in->target_goal.get(), a.goal);
     if (a.replan) {
         plan::SearchOptions so;
         so.search = *plan::parse_search(a.search);
@@ -285,7 +273,7 @@ int cmd_transfer(const TransferArgs& a, std::ostream& out, std::ostream& err) {
     if (rc != kOk) {
         return rc;
     }
-    return r.valid ? kOk : kNo;
+    return r.verdict.valid ? kOk : kNo;
 }
 
 } // namespace
