@@ -7,9 +7,12 @@
 // parts to the state's parts satisfies (a part may be left unassigned: its statement and those
 // that mention it are then unsatisfied). A monic morphism G -> X satisfies them all.
 //
-// The assignment is found by branch and bound over G's parts (parts with many statements first,
-// a part's candidates ordered by the statements they satisfy); a node limit bounds the work, and
-// when it is reached the figure is a lower bound (exact = false).
+// A monic morphism G -> X (plan::embed_goal) is looked for first. Otherwise the assignment is
+// found by branch and bound over G's parts, each next part the one most linked by hom statements
+// to the parts placed already, a part's candidates ordered by the statements they satisfy; a node
+// limit bounds the work, and when it is reached the figure is a lower bound (exact = false).
+// Statements name an unnamed goal part by a term of a named part that reaches it
+// (`inReceptacle_r(i1) == plateIsReceptacle(plate)`), else by its label (`#3`).
 
 #include "catplan/acset/acset.hpp"
 
