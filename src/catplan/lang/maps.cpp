@@ -2,6 +2,7 @@
 // (docs/language.md, "Ontology maps") elaborated into a migrate::SchemaMap, and a map printed back
 // in brief.
 
+#include "catplan/lang/detail/elaborator.hpp"
 #include "catplan/lang/detail/map_elaboration.hpp"
 #include "catplan/lang/module.hpp"
 
@@ -22,11 +23,6 @@ using schema::Generator;
 using schema::GeneratorKind;
 using schema::Schema;
 using schema::ValueKind;
-
-bool is_literal_expr(const Expr& e) {
-    return e.kind == Expr::Kind::Int || e.kind == Expr::Kind::Float ||
-           e.kind == Expr::Kind::String || e.kind == Expr::Kind::Bool;
-}
 
 // The literal as a value; an Int literal becomes a Float where a Float is wanted.
 Value literal_value(const Expr& e, ValueKind want) {
@@ -327,7 +323,7 @@ private:
         const Expr& label = st.args[1];
         if (label.is_binary("->")) {
             const Expr& body = label.args[1];
-            if (!is_literal_expr(body)) {
+            if (!detail::is_literal(body)) {
                 error(body.range, fmt::format("only a constant function such as (x -> \"red\") "
                                               "can label an edge, found '{}'",
                                               to_string(label)));
@@ -390,7 +386,7 @@ private:
 
     // A term of query q: a literal, `x`, `f(x)`, `x ⋅ f ⋅ attr` or `attr(f(x))`.
     std::optional<Term> term(const Query& q, const Expr& e) {
-        if (is_literal_expr(e)) {
+        if (detail::is_literal(e)) {
             return Term::constant(literal_value(e, ValueKind::Unknown), e.range);
         }
         std::optional<Term> t;
@@ -573,7 +569,7 @@ private:
 
     void map_attr_image(AttrId a, const Expr& rhs, SourceRange at) {
         ValueKind want = map_->attr_type_kind(t_.attr(a).codom);
-        if (is_literal_expr(rhs)) {
+        if (detail::is_literal(rhs)) {
             map_->map_attr_constant(a, literal_value(rhs, want), at);
             return;
         }
@@ -583,7 +579,7 @@ private:
         }
         if (rhs.is_binary("->")) {
             const Expr& body = rhs.args[1];
-            if (!is_literal_expr(body)) {
+            if (!detail::is_literal(body)) {
                 error(body.range, fmt::format("only a constant function such as (x -> 0.0) can "
                                               "be written for '{}'; send it to a term such as "
                                               "label(x) instead",
@@ -638,7 +634,7 @@ private:
             map_attr_image(a, rhs.args[0], at); // the identity: the input itself
             return;
         }
-        if (!is_literal_expr(body)) {
+        if (!detail::is_literal(body)) {
             error(body.range, fmt::format("only a constant function such as (v -> false) or the "
                                           "identity (v -> v) can follow '|>' for '{}'",
                                           t_.attr(a).name));

@@ -1,6 +1,6 @@
 #pragma once
 // Elaboration of an ontology map's entries (`@migration Name(Target, Source) begin ... end`) into a
-// migrate::SchemaMap. The loader (module.cpp) resolves the header and the name; this file gives
+// migrate::SchemaMap. map_declarations.cpp resolves the header and the name; this file gives
 // each entry its meaning and turns every problem of the map into a located diagnostic.
 
 #include "catplan/base/diagnostic.hpp"

@@ -1,0 +1,128 @@
+#pragma once
+// A presentation written in the language (generators `x::Block`, equations `f(x) == y`,
+// `a(x) == "red"`) turned into a state by congruence closure: the colimit of its generators and
+// equations. @acset_colim builds a free instance from it (undefined homs get new parts, undefined
+// attributes new variables); rule blocks build partial states (undefined cells stay unset).
+//
+// Each operation that can find bad input reports it to the sink it is given: a rule elaborates
+// some blocks twice (Pre into L and into each condition) and reports each error only once.
+
+#include "catplan/acset/acset.hpp"
+#include "catplan/base/diagnostic.hpp"
+#include "catplan/base/union_find.hpp"
+#include "catplan/lang/detail/elaborator.hpp"
+#include "catplan/lang/syntax.hpp"
+#include "catplan/schema/schema.hpp"
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+namespace catplan::lang::detail {
+
+/// A term of the presentation: a part node, a value node (both resolved to their class when
+/// returned), or a literal.
+struct Term {
+    enum class Kind { Part, Value, Literal } kind;
+    std::uint32_t node = 0;
+    const Expr* expr = nullptr;
+};
+
+class Colimit {
+public:
+    /// An empty presentation on s; `inferred` (may be null) locates kinds inferred from literals.
+    Colimit(const schema::Schema& s, const InferredKinds* inferred);
+
+    const schema::Schema& schema() const { return s_; }
+
+    /// Declares the generators of `x::T` or `(x, y)::T` (T an object or an attribute type).
+    void declare(const Expr& st, DiagnosticSink& sink);
+    /// The term an expression denotes (a generator, a hom or attribute applied to a term, or a
+    /// literal), creating the images it names; nullopt after an error.
+    std::optional<Term> eval(const Expr& e, DiagnosticSink& sink);
+    /// Imposes the equation `lhs == rhs` and closes under congruence.
+    void equation(const Expr& st, DiagnosticSink& sink);
+    /// Gives every undefined hom a new part and every undefined attribute a new variable; false
+    /// (reported at `at`) when more than max_fresh new parts are needed.
+    bool complete(SourceRange at, std::size_t max_fresh, DiagnosticSink& sink);
+
+    /// "a part of Block", "a value of Color", "a literal".
+    std::string describe(const Term& t);
+
+    /// Rules: a named variable K takes over from Pre (so values flow by name to Eff).
+    void declare_value(const std::string& name, AttrTypeId t, SourceRange range);
+
+    /// Rules: a generator declared again with the same type is the same generator.
+    void allow_redeclare() { allow_redeclare_ = true; }
+
+    /// The generator with this name: its term (node resolved) and declaration range.
+    std::optional<std::pair<Term, SourceRange>> generator(const std::string& name);
+
+    /// The generators' names in declaration order.
+    const std::vector<std::string>& generator_names() const { return gen_order_; }
+
+    ObId part_ob(std::uint32_t node) const { return parts_[node].ob; }
+
+    AttrTypeId value_type(std::uint32_t node) const { return values_[node].type; }
+
+    /// A partial presentation (rules): undefined homs and attributes stay unset.
+    acset::ACSet build_partial(std::shared_ptr<schema::Schema> schema);
+
+    /// A free presentation (instances): after completion every hom and attribute is defined, so
+    /// building it partially gives the whole state.
+    acset::ACSet build(std::shared_ptr<schema::Schema> schema) {
+        return build_partial(std::move(schema));
+    }
+
+    /// After a build: the part or value a node became.
+    Part built_part(std::uint32_t node) { return built_parts_[parts_uf_.find(node)]; }
+
+    acset::Value built_value(std::uint32_t node) { return built_values_[values_uf_.find(node)]; }
+
+private:
+    static constexpr std::uint32_t kNone = UINT32_MAX;
+
+    struct PartNode {
+        ObId ob;
+        std::vector<std::uint32_t> homs;  // by position in homs_from(ob); kNone if undefined
+        std::vector<std::uint32_t> attrs; // value nodes, by position in attrs_from(ob)
+    };
+
+    struct ValueNode {
+        AttrTypeId type;
+        std::optional<acset::Value> literal;
+        SourceRange literal_range;
+    };
+
+    struct Gen {
+        Term term;
+        SourceRange range;
+    };
+
+    std::uint32_t new_part(ObId x, std::string name);
+    std::uint32_t new_value(AttrTypeId t, std::string name);
+    void set_literal(std::uint32_t v, acset::Value value, SourceRange lit, SourceRange at,
+                     DiagnosticSink& sink);
+    void close(SourceRange at, DiagnosticSink& sink);
+
+    const schema::Schema& s_;
+    const InferredKinds* inferred_;
+    std::unordered_map<std::uint32_t, std::uint32_t> hom_slot_, attr_slot_;
+    std::vector<PartNode> parts_;
+    std::vector<std::string> part_names_;
+    std::vector<ValueNode> values_;
+    std::vector<std::string> value_names_;
+    UnionFind parts_uf_, values_uf_;
+    std::unordered_map<std::string, Gen> gens_;
+    std::vector<std::string> gen_order_;
+    bool allow_redeclare_ = false;
+    std::vector<Part> built_parts_;
+    std::vector<acset::Value> built_values_;
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> pending_parts_, pending_values_;
+};
+
+} // namespace catplan::lang::detail

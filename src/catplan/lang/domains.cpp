@@ -1,0 +1,221 @@
+// Domains and problems (docs/language.md, "Domains and problems"): `@domain Name(Schema)` gathers
+// rules (written inside or named), `@problem Name(Domain)` names an initial and a goal instance.
+
+#include "catplan/lang/detail/elaboration.hpp"
+#include "catplan/lang/detail/elaborator.hpp"
+#include "catplan/lang/detail/rule_elaboration.hpp"
+#include "catplan/plan/domain.hpp"
+
+#include <fmt/format.h>
+#include <map>
+#include <memory>
+#include <string>
+
+namespace catplan::lang::detail {
+namespace {
+
+using acset::ACSet;
+
+// A rule named in a domain, `unstack` or with parameters `unstack(block, underblock)`.
+rewrite::RulePtr named_rule(Elaborator& ctx, const Expr& st) {
+    DiagnosticSink& sink = ctx.sink;
+    const Declaration* d = ctx.module.find(st.text);
+    SourceRange at = st.kind == Expr::Kind::Call ? st.name_range : st.range;
+    if (d == nullptr || d->kind != DeclKind::Rule) {
+        sink.error(at, d == nullptr ? fmt::format("unknown rule '{}'", st.text)
+                                    : fmt::format("'{}' is not a rule", st.text));
+        return nullptr;
+    }
+    if (st.kind == Expr::Kind::Name) {
+        return d->rule;
+    }
+    auto copy = std::make_shared<rewrite::Rule>(*d->rule);
+    copy->parameters.clear();
+    bool ok = true;
+    for (const auto& a : st.args) {
+        bool found = false;
+        for (std::uint32_t o = 0; o < copy->L.schema().num_obs() && !found; ++o) {
+            if (a.kind != Expr::Kind::Name) {
+                break;
+            }
+            if (auto p = copy->L.find_part(ObId(o), a.text)) {
+                copy->parameters.push_back({a.text, ObId(o), *p});
+                found = true;
+            }
+        }
+        if (!found) {
+            sink.error(a.range, fmt::format("parameter '{}' is not a part generator of the "
+                                            "precondition of '{}'",
+                                            to_string(a), st.text));
+            ok = false;
+        }
+    }
+    return ok ? copy : nullptr;
+}
+
+// One statement of a domain's body as a rule (`@rule ...`, `:name => @migration(...)` or a rule's
+// name), with the place to report it at; nullptr after an error.
+rewrite::RulePtr domain_rule(Elaborator& ctx, const Expr& st,
+                             const std::shared_ptr<schema::Schema>& schema, SourceRange& at) {
+    at = st.range;
+    if (st.kind == Expr::Kind::Macro && st.macro->name == "rule") {
+        RuleSource src;
+        if (!rule_source(ctx, *st.macro, "", {}, schema, src)) {
+            return nullptr;
+        }
+        at = src.name_range;
+        return elaborate_rule(ctx, src);
+    }
+    if (st.is_binary("=>") &&
+        (st.args[0].kind == Expr::Kind::Symbol || st.args[0].kind == Expr::Kind::Name) &&
+        st.args[1].kind == Expr::Kind::Macro && st.args[1].macro->name == "migration") {
+        RuleSource src;
+        if (!rule_source(ctx, *st.args[1].macro, st.args[0].text, st.args[0].range, schema, src)) {
+            return nullptr;
+        }
+        at = src.name_range;
+        return elaborate_rule(ctx, src);
+    }
+    if (st.kind == Expr::Kind::Name || st.kind == Expr::Kind::Call) {
+        at = st.kind == Expr::Kind::Call ? st.name_range : st.range;
+        return named_rule(ctx, st);
+    }
+    ctx.sink.error(st.range, fmt::format("expected a rule in the domain: '@rule ...', "
+                                         "':name => @migration(...)' or the name of a "
+                                         "rule, found '{}'",
+                                         to_string(st)));
+    return nullptr;
+}
+
+// `initial = I` or `goal = G` of a problem on domain dd into its slot; false after an error.
+bool problem_instance(Elaborator& ctx, const Expr& st, const Declaration& dd,
+                      const std::string& dname, std::shared_ptr<const ACSet>* slots[2],
+                      std::string names[2]) {
+    DiagnosticSink& sink = ctx.sink;
+    if (!st.is_binary("=") || st.args[0].kind != Expr::Kind::Name ||
+        (st.args[0].text != "initial" && st.args[0].text != "goal") ||
+        st.args[1].kind != Expr::Kind::Name) {
+        sink.error(st.range, fmt::format("expected 'initial = Instance' or 'goal = "
+                                         "Instance', found '{}'",
+                                         to_string(st)));
+        return false;
+    }
+    int i = st.args[0].text == "initial" ? 0 : 1;
+    const Expr& iname = st.args[1];
+    if (slots[i]->get() != nullptr) {
+        sink.error(st.range, fmt::format("'{}' is given twice", st.args[0].text));
+        return false;
+    }
+    const Declaration* id = ctx.module.find(iname.text);
+    if (id == nullptr || id->kind != DeclKind::Instance) {
+        sink.error(iname.range, id == nullptr ? fmt::format("unknown instance '{}'", iname.text)
+                                              : fmt::format("'{}' is not an instance", iname.text));
+        return false;
+    }
+    if (id->schema.get() != dd.schema.get()) {
+        sink.error(iname.range,
+                   fmt::format("instance '{}' is on schema '{}' but domain "
+                               "'{}' is on '{}'",
+                               iname.text, id->schema->name(), dname, dd.schema->name()));
+        return false;
+    }
+    *slots[i] = id->instance;
+    names[i] = iname.text;
+    return true;
+}
+
+} // namespace
+
+void elaborate_domain(Elaborator& ctx, const MacroCall& form, bool imported) {
+    DiagnosticSink& sink = ctx.sink;
+    const auto& h = form.header;
+    if (h.size() != 1 || h[0].kind != Expr::Kind::Call || h[0].args.size() != 1 ||
+        h[0].args[0].kind != Expr::Kind::Name || !form.has_body || !form.assigned.empty()) {
+        sink.error(form.range, "expected '@domain Name(Schema) begin ... end'");
+        return;
+    }
+    std::size_t errors = sink.num_errors();
+    auto schema = ctx.lookup_schema(h[0].args[0], true);
+    if (!schema) {
+        return;
+    }
+    auto domain = std::make_shared<plan::Domain>();
+    domain->name = h[0].text;
+    domain->schema = schema;
+    domain->range = h[0].name_range;
+    std::map<std::string, SourceRange> seen;
+    for (const auto& st : form.body) {
+        SourceRange at;
+        rewrite::RulePtr rule = domain_rule(ctx, st, schema, at);
+        if (!rule) {
+            continue;
+        }
+        if (rule->L.schema_ptr().get() != schema.get()) {
+            sink.error(at, fmt::format("rule '{}' is on schema '{}' but domain '{}' is on "
+                                       "'{}'",
+                                       rule->name, rule->L.schema().name(), domain->name,
+                                       schema->name()));
+            continue;
+        }
+        auto [it, fresh] = seen.emplace(rule->name, at);
+        if (!fresh) {
+            auto& d = sink.error(
+                at, fmt::format("rule '{}' is already in domain '{}'", rule->name, domain->name));
+            d.notes.emplace_back(it->second, "first given here");
+            continue;
+        }
+        domain->rules.push_back(std::move(rule));
+    }
+    if (sink.num_errors() != errors || !ctx.claim_name(domain->name, domain->range)) {
+        return;
+    }
+    Declaration d =
+        new_declaration(DeclKind::Domain, domain->name, domain->range, imported, schema);
+    d.domain = std::move(domain);
+    ctx.module.add(std::move(d));
+}
+
+void elaborate_problem(Elaborator& ctx, const MacroCall& form, bool imported) {
+    DiagnosticSink& sink = ctx.sink;
+    const auto& h = form.header;
+    if (h.size() != 1 || h[0].kind != Expr::Kind::Call || h[0].args.size() != 1 ||
+        h[0].args[0].kind != Expr::Kind::Name || !form.has_body || !form.assigned.empty()) {
+        sink.error(form.range, "expected '@problem Name(Domain) begin initial = I; goal = "
+                               "G end'");
+        return;
+    }
+    std::size_t errors = sink.num_errors();
+    const Expr& dname = h[0].args[0];
+    const Declaration* dd = ctx.module.find(dname.text);
+    if (dd == nullptr || dd->kind != DeclKind::Domain) {
+        sink.error(dname.range, dd == nullptr ? fmt::format("unknown domain '{}'", dname.text)
+                                              : fmt::format("'{}' is not a domain", dname.text));
+        return;
+    }
+    auto problem = std::make_shared<plan::Problem>();
+    problem->name = h[0].text;
+    problem->domain = dd->domain;
+    problem->range = h[0].name_range;
+    std::string names[2];
+    std::shared_ptr<const ACSet>* slots[2] = {&problem->initial, &problem->goal};
+    for (const auto& st : form.body) {
+        problem_instance(ctx, st, *dd, dname.text, slots, names);
+    }
+    for (int i = 0; i < 2; ++i) {
+        if (slots[i]->get() == nullptr && sink.num_errors() == errors) {
+            sink.error(form.range, fmt::format("problem '{}' needs '{} = Instance'", problem->name,
+                                               i == 0 ? "initial" : "goal"));
+        }
+    }
+    if (sink.num_errors() != errors || !ctx.claim_name(problem->name, problem->range)) {
+        return;
+    }
+    Declaration d =
+        new_declaration(DeclKind::Problem, problem->name, problem->range, imported, dd->schema);
+    d.initial_name = names[0];
+    d.goal_name = names[1];
+    d.problem = std::move(problem);
+    ctx.module.add(std::move(d));
+}
+
+} // namespace catplan::lang::detail
