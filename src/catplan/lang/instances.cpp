@@ -7,6 +7,7 @@
 #include "catplan/lang/detail/elaboration.hpp"
 #include "catplan/lang/detail/elaborator.hpp"
 
+#include <cstdint>
 #include <fmt/format.h>
 #include <map>
 #include <optional>
@@ -78,12 +79,18 @@ std::optional<ACSet> build_colimit(Elaborator& ctx, const MacroCall& form,
 
 // ---- @acset -------------------------------------------------------------------------------------
 
+// The most parts and variables an @acset may declare in all (docs/language.md, "States as
+// tables"): far beyond any planning state, and checked before anything is allocated, so a count
+// such as 3000000000 is a located error rather than an exhausted memory.
+constexpr std::uint64_t kMaxTableParts = 10'000'000;
+
 // A table being read: the state, its schema, and where errors go.
 struct Table {
     ACSet& x;
     const Schema& s;
     const InferredKinds* inferred;
     DiagnosticSink& sink;
+    std::uint64_t declared = 0; // parts and variables so far
 };
 
 // `Ob = n` and `AttrType = n` (counts) into the state; returns the column statements, which need
@@ -122,10 +129,20 @@ std::vector<const Expr*> read_counts(Table& t, const MacroCall& form) {
                                                 lhs.text, to_string(rhs)));
             continue;
         }
+        auto count = static_cast<std::uint64_t>(rhs.int_value);
+        if (count > kMaxTableParts - t.declared) {
+            t.sink.error(rhs.range,
+                         fmt::format("too many parts: '{} = {}' would give this @acset "
+                                     "{} parts and variables, but at most {} are "
+                                     "allowed",
+                                     lhs.text, count, t.declared + count, kMaxTableParts));
+            continue;
+        }
+        t.declared += count;
         if (g->kind == GeneratorKind::Ob) {
-            t.x.add_parts(ObId(g->index), static_cast<std::size_t>(rhs.int_value));
+            t.x.add_parts(ObId(g->index), static_cast<std::size_t>(count));
         } else {
-            for (std::int64_t i = 0; i < rhs.int_value; ++i) {
+            for (std::uint64_t i = 0; i < count; ++i) {
                 t.x.add_var(AttrTypeId(g->index));
             }
         }

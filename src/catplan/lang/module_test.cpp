@@ -135,6 +135,26 @@ TEST(FreeInstance, CyclicSchemaStopsWithALocatedError) {
     EXPECT_EQ(c.num_parts(ob(c, "X")), 2u);
 }
 
+TEST(LiteralInstance, CountsStopAtTenMillionPartsAndVariablesInAll) {
+    Loaded l("@present G(FreeSchema) begin\n  V::Ob\n  W::AttrType(Int)\nend\n"
+             "@acset AtTheLimit(G) begin\n  V = 9999999\n  W = 1\nend\n"
+             "@acset OneMore(G) begin\n  V = 10000000\n  W = 1\nend\n"
+             "@acset Huge(G) begin\n  V = 4294967296\nend\n");
+    ASSERT_EQ(l.sink.num_errors(), 2u) << l.sink.render();
+    std::string out = l.sink.render();
+    EXPECT_NE(out.find("test.cp:11:7: error: too many parts: 'W = 1' would give this @acset "
+                       "10000001 parts and variables, but at most 10000000 are allowed"),
+              std::string::npos)
+        << out;
+    EXPECT_NE(out.find("test.cp:14:7: error: too many parts: 'V = 4294967296'"), std::string::npos)
+        << out;
+    const ACSet& x = l.instance("AtTheLimit");
+    EXPECT_EQ(x.num_parts(ob(x, "V")), 9999999u);
+    EXPECT_EQ(x.num_vars(*x.schema().find_attr_type("W")), 1u);
+    EXPECT_EQ(l.module.find("OneMore"), nullptr);
+    EXPECT_EQ(l.module.find("Huge"), nullptr);
+}
+
 TEST(ColorBlocksworld, InitialStateMatchesThePaper) {
     SourceManager sources;
     DiagnosticSink sink(sources);
