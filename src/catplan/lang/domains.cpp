@@ -32,7 +32,12 @@ rewrite::RulePtr named_rule(Elaborator& ctx, const Expr& st) {
     auto copy = std::make_shared<rewrite::Rule>(*d->rule);
     copy->parameters.clear();
     bool ok = true;
+    std::map<std::string, SourceRange> seen;
     for (const auto& a : st.args) {
+        if (a.kind == Expr::Kind::Name && !new_parameter(seen, a, sink)) {
+            ok = false;
+            continue;
+        }
         bool found = false;
         for (std::uint32_t o = 0; o < copy->L.schema().num_obs() && !found; ++o) {
             if (a.kind != Expr::Kind::Name) {

@@ -5,8 +5,10 @@
 #include "catplan/lang/detail/rule_elaboration.hpp"
 
 #include <fmt/format.h>
+#include <optional>
 #include <set>
 #include <string_view>
+#include <vector>
 
 namespace catplan::lang::detail {
 namespace {
@@ -94,7 +96,9 @@ std::optional<rewrite::AttrExpr> unary(Colimit& c, const Expr& e, ValueKind& kin
 bool type_binary(const std::string& op, ValueKind a, ValueKind b, Op& out, ValueKind& kind) {
     if (op == "+" || op == "-" || op == "/" || op == "*") {
         if (numeric(a) && numeric(b)) {
-            kind = a == ValueKind::Int && b == ValueKind::Int ? ValueKind::Int : ValueKind::Float;
+            // `/` gives a Float, also on two Ints, as in Julia; the rest stay Int on Ints.
+            bool ints = a == ValueKind::Int && b == ValueKind::Int && op != "/";
+            kind = ints ? ValueKind::Int : ValueKind::Float;
             out = op == "+" ? Op::Add : op == "-" ? Op::Sub : op == "*" ? Op::Mul : Op::Div;
             return true;
         }
@@ -144,7 +148,61 @@ std::optional<rewrite::AttrExpr> binary(Colimit& c, const Expr& e, ValueKind& ki
     return out;
 }
 
+bool is_zero(const Value& v) {
+    return (v.tag() == Value::Tag::Int && v.as_int() == 0) ||
+           (v.tag() == Value::Tag::Float && v.as_float() == 0.0);
+}
+
+// The value of e when it is constant. A constant part whose evaluation fails (an Int overflow, a
+// division by zero) and a division by a constant zero are reported at `at` (e's text); a part
+// with an error counts as not constant, so each error is reported once.
+std::optional<Value> fold(const rewrite::AttrExpr& e, SourceRange at, DiagnosticSink& sink) {
+    if (e.op == Op::Const) {
+        return e.constant;
+    }
+    if (e.op == Op::Input) {
+        return std::nullopt;
+    }
+    std::vector<std::optional<Value>> args;
+    bool constant = true;
+    for (const auto& a : e.args) {
+        args.push_back(fold(a, a.range, sink));
+        constant = constant && args.back().has_value();
+    }
+    if (e.op == Op::Div && args[1] && is_zero(*args[1])) {
+        sink.error(at, fmt::format("division by zero: the divisor is the constant {}",
+                                   args[1]->to_string()));
+        return std::nullopt;
+    }
+    if (!constant) {
+        return std::nullopt;
+    }
+    // Every input is a constant, so evaluate never asks for a bound value.
+    auto v = rewrite::evaluate(e, [](AttrTypeId, std::uint32_t) { return Value(); });
+    if (!v) {
+        sink.error(at, v.error());
+        return std::nullopt;
+    }
+    return *v;
+}
+
 } // namespace
+
+bool has_division(const Expr& e) {
+    if (e.is_binary("/")) {
+        return true;
+    }
+    for (const auto& a : e.args) {
+        if (has_division(a)) {
+            return true;
+        }
+    }
+    return false;
+}
+
+void check_constants(const rewrite::AttrExpr& e, SourceRange at, DiagnosticSink& sink) {
+    fold(e, at, sink);
+}
 
 bool is_operator_expr(const Expr& e) {
     if (e.kind == Expr::Kind::Unary) {

@@ -207,6 +207,8 @@ public:
         ACSet L = lc_.build_partial(schema_);
         for (auto& [st, e] : translated_) {
             fix_inputs(lc_, e);
+            // After fix_inputs: a cell Pre fixes is a constant too.
+            check_constants(e, value_side(*st).range, *sink_);
         }
         ACSet R = rc_.build_partial(schema_);
         elaborate_keep();
@@ -319,10 +321,15 @@ private:
             ValueKind want = schema_->attr_type(rc_.value_type(t->node)).kind;
             ValueKind got = kinds_[i];
             if (want != got) {
-                sink_->error(st->range, fmt::format("type error: the expression gives {} but '{}' "
-                                                    "holds {} values",
-                                                    kind_phrase(got), to_string(cell),
-                                                    schema::to_string(want)));
+                bool quotient = want == ValueKind::Int && got == ValueKind::Float &&
+                                has_division(value_side(*st));
+                sink_->error(st->range,
+                             fmt::format("type error: the expression gives {} but '{}' "
+                                         "holds {} values{}",
+                                         kind_phrase(got), to_string(cell), schema::to_string(want),
+                                         quotient ? " ('/' gives a Float, also on "
+                                                    "two Ints)"
+                                                  : ""));
                 continue;
             }
             expr_cells_.emplace_back(t->node, i);
@@ -423,12 +430,16 @@ private:
     // Parameters: the header's list, else L's named entities (objects without homs out).
     void parameters(rewrite::Rule& rule) {
         if (src_.has_params) {
+            std::map<std::string, SourceRange> seen;
             for (const Expr* p : src_.params) {
                 auto g = p->kind == Expr::Kind::Name ? lc_.generator(p->text) : std::nullopt;
                 if (!g || g->first.kind != Term::Kind::Part) {
                     sink_->error(p->range, fmt::format("parameter '{}' is not a part generator of "
                                                        "{}",
                                                        to_string(*p), pre_name_));
+                    continue;
+                }
+                if (!new_parameter(seen, *p, *sink_)) {
                     continue;
                 }
                 rule.parameters.push_back(
@@ -690,6 +701,15 @@ private:
 };
 
 } // namespace
+
+bool new_parameter(std::map<std::string, SourceRange>& seen, const Expr& p, DiagnosticSink& sink) {
+    auto [it, fresh] = seen.emplace(p.text, p.range);
+    if (!fresh) {
+        auto& d = sink.error(p.range, fmt::format("parameter '{}' is given twice", p.text));
+        d.notes.emplace_back(it->second, "first given here");
+    }
+    return fresh;
+}
 
 rewrite::RulePtr elaborate_rule(Elaborator& ctx, const RuleSource& src) {
     return RuleElaboration(ctx, src).run();

@@ -10,6 +10,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdint>
+#include <limits>
 #include <string>
 
 namespace catplan::lang {
@@ -323,6 +325,107 @@ end
     ASSERT_EQ(rule.conditions.size(), 1u);
     EXPECT_FALSE(rule.conditions[0].negative);
     EXPECT_EQ(rule.conditions[0].n_state.total_parts(), 2u);
+}
+
+const char* kCounter = R"(
+@present Counter(FreeSchema) begin
+  Thing::Ob
+  N::AttrType(Int)
+  R::AttrType(Float)
+  B::AttrType(Bool)
+  n::Attr(Thing, N)
+  r::Attr(Thing, R)
+  b::Attr(Thing, B)
+end
+@acset_colim Start(Counter) begin
+  t::Thing
+  n(t) == 9223372036854775806
+  r(t) == 0.0
+  b(t) == false
+end
+@rule inc(a) on Counter begin
+  Pre => begin a::Thing end
+  Keep => begin a::Thing end
+  Eff => begin n(a) == n(a) + 1 end
+end
+@rule flip(a) on Counter begin
+  Pre => begin a::Thing end
+  Keep => begin a::Thing end
+  Eff => begin n(a) == -n(a) - 1 end
+end
+@rule square(a) on Counter begin
+  Pre => begin a::Thing end
+  Keep => begin a::Thing end
+  Eff => begin n(a) == n(a) * n(a) end
+end
+@rule halve(a) on Counter begin
+  Pre => begin a::Thing end
+  Keep => begin a::Thing end
+  Eff => begin
+    r(a) == n(a) / 2
+    b(a) == (n(a) < 9007199254740993)
+  end
+end
+)";
+
+// Applies the rule named `name` to x at its one match, in place; the failure reason or "".
+std::string apply(const Module& m, std::string_view name, ACSet& x) {
+    const auto& rule = *m.find(name)->rule;
+    auto matches = rewrite::find_matches(rule, x);
+    EXPECT_EQ(matches.size(), 1u) << name;
+    ACSet before = x;
+    auto functional = rewrite::rewrite(rule, x, matches.at(0));
+    auto applied = rewrite::rewrite_in_place(rule, x, matches.at(0));
+    EXPECT_EQ(functional.has_value(), applied.has_value()) << name;
+    if (applied.has_value()) {
+        return "";
+    }
+    EXPECT_TRUE(x == before) << "a failing application leaves the state as it was";
+    return applied.error();
+}
+
+Value cell(const ACSet& x, std::string_view attr) {
+    return x.subpart(*x.schema().find_attr(attr), 0);
+}
+
+TEST(Rules, IntArithmeticIsCheckedWhenTheRuleIsApplied) {
+    auto l = load_text(kCounter);
+    ASSERT_FALSE(l->sink.has_errors()) << l->sink.render();
+    ACSet x = *l->module.find("Start")->instance;
+    constexpr std::int64_t kMax = std::numeric_limits<std::int64_t>::max();
+    EXPECT_EQ(apply(l->module, "inc", x), "");
+    EXPECT_EQ(cell(x, "n"), Value::integer(kMax));
+    EXPECT_NE(apply(l->module, "inc", x)
+                  .find("Int overflow: 9223372036854775807 + 1 is outside "
+                        "the range of Int"),
+              std::string::npos);
+    EXPECT_EQ(apply(l->module, "flip", x), ""); // -max - 1 is the least Int
+    EXPECT_EQ(cell(x, "n"), Value::integer(std::numeric_limits<std::int64_t>::min()));
+    EXPECT_NE(apply(l->module, "flip", x).find("Int overflow: -(-9223372036854775808)"),
+              std::string::npos);
+    EXPECT_NE(apply(l->module, "square", x)
+                  .find("Int overflow: -9223372036854775808 * "
+                        "-9223372036854775808"),
+              std::string::npos);
+}
+
+TEST(Rules, DivisionGivesAFloatAndIntComparisonsAreExact) {
+    auto l = load_text(kCounter);
+    ASSERT_FALSE(l->sink.has_errors()) << l->sink.render();
+    ACSet x = *l->module.find("Start")->instance;
+    // 2^53 - 1 squared overflows, 3037000499 squared does not.
+    ACSet y = x;
+    y.set_subpart(*y.schema().find_attr("n"), 0, Value::integer(3037000499));
+    EXPECT_EQ(apply(l->module, "square", y), "");
+    EXPECT_EQ(cell(y, "n"), Value::integer(9223372030926249001));
+    x.set_subpart(*x.schema().find_attr("n"), 0, Value::integer(9007199254740992));
+    EXPECT_EQ(apply(l->module, "halve", x), "");
+    EXPECT_EQ(cell(x, "r"), Value::real(4503599627370496.0));
+    // As doubles, 2^53 and 2^53 + 1 are equal; as Ints 2^53 < 2^53 + 1.
+    EXPECT_EQ(cell(x, "b"), Value::boolean(true));
+    x.set_subpart(*x.schema().find_attr("n"), 0, Value::integer(7));
+    EXPECT_EQ(apply(l->module, "halve", x), "");
+    EXPECT_EQ(cell(x, "r"), Value::real(3.5));
 }
 
 TEST(Rules, ErrorsAreLocated) {

@@ -24,16 +24,21 @@ Result<Value> arithmetic(Op op, const Value& a, const Value& b) {
     if (!is_number(a) || !is_number(b)) {
         return fail(fmt::format("arithmetic on {} and {}", a.to_string(), b.to_string()));
     }
+    // Int with Int stays Int and is checked: a result outside 64 bits is an error, never a
+    // wrapped value. `/` gives a Float, also on two Ints, as in Julia.
     if (a.tag() == Value::Tag::Int && b.tag() == Value::Tag::Int && op != Op::Div) {
-        std::int64_t x = a.as_int(), y = b.as_int();
-        switch (op) {
-        case Op::Add:
-            return Value::integer(x + y);
-        case Op::Sub:
-            return Value::integer(x - y);
-        default:
-            return Value::integer(x * y);
+        std::int64_t x = a.as_int(), y = b.as_int(), z = 0;
+        bool overflow = op == Op::Add   ? __builtin_add_overflow(x, y, &z)
+                        : op == Op::Sub ? __builtin_sub_overflow(x, y, &z)
+                                        : __builtin_mul_overflow(x, y, &z);
+        if (overflow) {
+            return fail(fmt::format("Int overflow: {} {} {} is outside the range of Int", x,
+                                    op == Op::Add   ? "+"
+                                    : op == Op::Sub ? "-"
+                                                    : "*",
+                                    y));
         }
+        return Value::integer(z);
     }
     double x = as_double(a), y = as_double(b);
     switch (op) {
@@ -53,11 +58,15 @@ Result<Value> arithmetic(Op op, const Value& a, const Value& b) {
 
 Result<Value> compare(Op op, const Value& a, const Value& b) {
     if (op == Op::Eq || op == Op::Ne) {
-        bool eq = is_number(a) && is_number(b) ? as_double(a) == as_double(b) : a == b;
+        bool eq = is_number(a) && is_number(b) && a.tag() != b.tag() ? as_double(a) == as_double(b)
+                                                                     : a == b;
         return Value::boolean(op == Op::Eq ? eq : !eq);
     }
     int c = 0;
-    if (is_number(a) && is_number(b)) {
+    if (a.tag() == Value::Tag::Int && b.tag() == Value::Tag::Int) {
+        // Exactly: beyond 2^53 two Ints can convert to one double.
+        c = a.as_int() < b.as_int() ? -1 : (a.as_int() > b.as_int() ? 1 : 0);
+    } else if (is_number(a) && is_number(b)) {
         double x = as_double(a), y = as_double(b);
         c = x < y ? -1 : (x > y ? 1 : 0);
     } else if (a.tag() == Value::Tag::String && b.tag() == Value::Tag::String) {
@@ -123,7 +132,11 @@ Result<Value> evaluate(const AttrExpr& e,
         return Value::string(std::string(args[0].as_string()) + std::string(args[1].as_string()));
     case Op::Neg:
         if (args[0].tag() == Value::Tag::Int) {
-            return Value::integer(-args[0].as_int());
+            std::int64_t x = args[0].as_int(), z = 0;
+            if (__builtin_sub_overflow(std::int64_t{0}, x, &z)) {
+                return fail(fmt::format("Int overflow: -({}) is outside the range of Int", x));
+            }
+            return Value::integer(z);
         }
         if (args[0].tag() == Value::Tag::Float) {
             return Value::real(-args[0].as_float());

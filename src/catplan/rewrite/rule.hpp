@@ -52,7 +52,7 @@ struct AttrExpr {
         Sub,
         Mul,
         Div,
-        Neg,    // arithmetic on Int/Float (Int if both Int)
+        Neg,    // arithmetic on Int/Float (Int if both Int, except Div: always Float)
         Concat, // string concatenation (`*` in Julia)
         Not,
         And,
@@ -73,7 +73,8 @@ struct AttrExpr {
 };
 
 /// Evaluates an expression; `input(type, var)` gives the value the match bound to an L variable.
-/// Fails with a reason on a type error, a division by zero, or an input that is not concrete.
+/// Fails with a reason on a type error, an Int overflow, a division by zero, or an input that is
+/// not concrete.
 Result<Value> evaluate(const AttrExpr& e,
                        const std::function<Value(AttrTypeId, std::uint32_t)>& input);
 

@@ -11,6 +11,7 @@
 #include "catplan/rewrite/rule.hpp"
 #include "catplan/schema/schema.hpp"
 
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -46,6 +47,10 @@ bool rule_source(Elaborator& ctx, const MacroCall& form, const std::string& assi
 /// The rule, or nullptr after reporting every error found.
 rewrite::RulePtr elaborate_rule(Elaborator& ctx, const RuleSource& src);
 
+/// Records the name of a parameter `p` of a list; reports and returns false when the list named
+/// it before (one part cannot be two parameters).
+bool new_parameter(std::map<std::string, SourceRange>& seen, const Expr& p, DiagnosticSink& sink);
+
 // ---- attribute expressions (rule_expressions.cpp) -----------------------------------------------
 
 /// Whether the expression is an operator application (`a + b`, `!a`, `a < b`, ...).
@@ -60,6 +65,12 @@ std::string kind_phrase(schema::ValueKind k);
 /// nullopt after an error (reported to `sink`).
 std::optional<rewrite::AttrExpr> translate(Colimit& c, const Expr& e, schema::ValueKind& kind,
                                            DiagnosticSink& sink);
+/// Reports the parts of a translated expression that are constant but cannot be computed (an
+/// Int overflow, a division by zero) and every division by a constant zero, each at its text;
+/// `at` is the text of the whole expression.
+void check_constants(const rewrite::AttrExpr& e, SourceRange at, DiagnosticSink& sink);
+/// Whether the expression divides somewhere (for the hint that `/` gives a Float).
+bool has_division(const Expr& e);
 /// Replaces c's value nodes in Input nodes by the variables c was built into (or by the constant
 /// the presentation gives them).
 void fix_inputs(Colimit& c, rewrite::AttrExpr& e);

@@ -1,0 +1,1 @@
+check tests/lang/err_rule_duplicate_parameter.cp
