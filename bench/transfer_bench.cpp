@@ -162,9 +162,9 @@ const Inputs& inputs() {
 
 // Aborts unless t is a valid transfer of a plan of `steps` steps.
 void check(const transfer::TransferResult& t, std::size_t steps) {
-    if (!t.valid || t.steps.size() != steps) {
+    if (!t.verdict.valid() || t.steps.size() != steps) {
         fail("invalid transfer (" + std::to_string(t.steps.size()) + " of " +
-             std::to_string(steps) + " steps): " + t.reason);
+             std::to_string(steps) + " steps): " + t.verdict.reason());
     }
 }
 

@@ -85,7 +85,7 @@ const lang::Declaration* find_declaration(const lang::Module& m, const std::stri
     return d;
 }
 
-// A rule declared at top level or inside a domain of the module.
+// The instance `name` as a goal on the map's target schema.
 std::shared_ptr<const acset::ACSet> find_target_goal(const lang::Module& m, const std::string& file,
                                                      const std::string& name,
                                                      const schema::SchemaPtr& target,
@@ -100,21 +100,6 @@ std::shared_ptr<const acset::ACSet> find_target_goal(const lang::Module& m, cons
         return nullptr;
     }
     return g->instance;
-}
-
-Verdict judge(const transfer::TransferResult& t, const acset::ACSet* target_goal,
-              const std::string& goal_name) {
-    Verdict v;
-    v.goal = target_goal && t.final_state
-                 ? transfer::goal_satisfaction(*target_goal, *t.final_state)
-                 : t.goal;
-    v.valid = t.valid && v.goal.satisfied == v.goal.total;
-    if (!t.valid) {
-        v.reason = t.reason;
-    } else if (!v.valid) {
-        v.reason = fmt::format("the intended goal {} is not satisfied", goal_name);
-    }
-    return v;
 }
 
 const rewrite::Rule* find_rule(const lang::Module& m, const std::string& name) {

@@ -75,18 +75,6 @@ std::shared_ptr<const acset::ACSet> find_target_goal(const lang::Module& m, cons
                                                      const schema::SchemaPtr& target,
                                                      std::ostream& err);
 
-/// A transfer's verdict: judged by the goal intended in the target domain when one is given
-/// (`--goal`), else by Δ_F(G) as the transfer checked it.
-struct Verdict {
-    transfer::GoalSatisfaction goal;
-    bool valid = false;
-    std::string reason; ///< why it is invalid ("" when valid)
-};
-
-/// The verdict on t; target_goal may be null (then goal_name is not used).
-Verdict judge(const transfer::TransferResult& t, const acset::ACSet* target_goal,
-              const std::string& goal_name);
-
 /// The subcommands and what runs each when it is the one parsed.
 class CommandTable {
 public:

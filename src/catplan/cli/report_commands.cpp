@@ -96,6 +96,9 @@ int cmd_report(const ReportArgs& a, std::ostream& out, std::ostream& err) {
     transfer::TransferOptions options;
     options.keep_states = true; // the page shows every state
     options.rename_by_type = a.rename_by_type;
+    // The verdict is about the goal intended in the target domain, as `transfer --goal`.
+    options.goal = in->target_goal;
+    options.goal_name = a.goal;
     auto t = transfer::transfer_plan(*in->map, *in->problem, in->plan, options);
     report::ReportInput r;
     r.map = in->map.get();
@@ -106,11 +109,6 @@ int cmd_report(const ReportArgs& a, std::ostream& out, std::ostream& err) {
     r.transfer_peak_kib = transfer::peak_rss_kib();
     r.no_timing = a.no_timing;
     r.dot.left_to_right = a.lr;
-    // The verdict is about the goal intended in the target domain, as `transfer --goal`.
-    Verdict v = judge(t, in->target_goal.get(), a.goal);
-    r.goal = v.goal;
-    r.valid = v.valid;
-    r.reason = v.reason;
     std::optional<transfer::Replan> rp;
     if (a.replan) {
         plan::SearchOptions so;
@@ -124,10 +122,11 @@ int cmd_report(const ReportArgs& a, std::ostream& out, std::ostream& err) {
     if (rc != kOk) {
         return rc;
     }
+    const auto& v = t.verdict;
     if (!a.output.empty()) {
-        out << fmt::format("{}: {}\n", a.output, v.valid ? "valid" : "invalid: " + v.reason);
+        out << fmt::format("{}: {}\n", a.output, v.valid() ? "valid" : "invalid: " + v.reason());
     }
-    return v.valid ? kOk : kNo;
+    return v.valid() ? kOk : kNo;
 }
 
 } // namespace

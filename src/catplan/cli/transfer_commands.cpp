@@ -108,14 +108,14 @@ std::vector<plan::Step> target_steps(const transfer::TransferResult& t) {
 // What the command measured around the library calls.
 struct Outcome {
     transfer::TransferResult t;
-    Verdict verdict; // by the intended goal
     long transfer_peak_kib = 0;
     std::optional<transfer::Replan> replan;
 };
 
 std::string text_report(const TransferArgs& a, const TransferInputs& in, const Outcome& r) {
     const auto& t = r.t;
-    const auto& goal = r.verdict.goal;
+    const auto& v = t.verdict;
+    const auto& goal = v.goal;
     const auto& rp = r.replan;
     const auto& f = *in.map;
     std::string o;
@@ -124,7 +124,9 @@ std::string text_report(const TransferArgs& a, const TransferInputs& in, const O
                      transfer::to_string(t.migration));
     o += fmt::format("map:\n{}", map_brief(f));
     o += fmt::format("source plan ({} steps): {}\n", in.plan->steps.size(),
-                     t.source_valid ? "valid" : "invalid: " + t.source_reason);
+                     v.source_valid()
+                         ? "valid"
+                         : "invalid: " + v.find(transfer::Fault::Kind::SourcePlan)->to_string());
     for (std::size_t i = 0; i < in.plan->steps.size(); ++i) {
         o += fmt::format("  {}. {}\n", i + 1, in.plan->steps[i].to_string());
     }
@@ -142,18 +144,18 @@ std::string text_report(const TransferArgs& a, const TransferInputs& in, const O
                              acset::to_tables(t.target_states[i + 1]));
         }
     }
-    if (t.failed_step) {
-        o += fmt::format("  {}. {}: not transferred\n", t.failed_step->index + 1,
-                         in.plan->steps[t.failed_step->index].to_string());
+    if (const auto* failed = v.failed_step()) {
+        o += fmt::format("  {}. {}: not transferred\n", *failed->step + 1,
+                         in.plan->steps[*failed->step].to_string());
     }
-    if (t.migration == transfer::MigrationKind::Delta) {
+    if (v.claim(transfer::Claim::Kind::ValidByConstruction).holds()) {
         o += "a delta migration preserves pushouts: the transferred plan is valid by "
              "construction (paper Appendix A); checked anyway\n";
     }
-    o += r.verdict.valid ? "verdict: valid: every step applies and the goal embeds monically\n"
-                         : fmt::format("verdict: invalid: {}\n", r.verdict.reason);
+    o += v.valid() ? "verdict: valid: every step applies and the goal embeds monically\n"
+                   : fmt::format("verdict: invalid: {}\n", v.reason());
     o += fmt::format("goal satisfaction: {}{}\n", percent(goal),
-                     in.target_goal ? fmt::format(" (goal {})", a.goal) : std::string());
+                     v.goal_name.empty() ? std::string() : fmt::format(" (goal {})", v.goal_name));
     for (const auto& u : goal.unsatisfied) {
         o += fmt::format("  unsatisfied: {}\n", u);
     }
@@ -197,23 +199,23 @@ std::string text_report(const TransferArgs& a, const TransferInputs& in, const O
 
 nlohmann::json json_report(const TransferArgs& a, const TransferInputs& in, const Outcome& r) {
     const auto& t = r.t;
+    const auto& v = t.verdict;
     nlohmann::json j;
     j["source_plan"] = plan_strings(in.plan->steps);
-    j["source_valid"] = t.source_valid;
+    j["source_valid"] = v.source_valid();
     j["target_plan"] = plan_strings(target_steps(t));
-    j["valid"] = r.verdict.valid;
+    j["valid"] = v.valid();
     j["failed_step"] = nullptr;
-    if (t.failed_step) {
-        j["failed_step"] = {{"index", t.failed_step->index}, {"reason", t.reason}};
-    } else if (!r.verdict.valid) {
-        j["reason"] = r.verdict.reason;
+    if (const auto* failed = v.failed_step()) {
+        j["failed_step"] = {{"index", *failed->step}, {"reason", v.reason()}};
+    } else if (!v.valid()) {
+        j["reason"] = v.reason();
     }
-    j["goal_satisfaction"] = r.verdict.goal.fraction();
-    j["goal_statements"] = r.verdict.goal.total;
-    j["unsatisfied"] = r.verdict.goal.unsatisfied;
+    j["goal_satisfaction"] = v.goal.fraction();
+    j["goal_statements"] = v.goal.total;
+    j["unsatisfied"] = v.goal.unsatisfied;
     j["migration"] = std::string(transfer::to_string(t.migration));
-    // Δ_F preserves pushouts: each migrated step applies by construction (paper Appendix A).
-    j["valid_by_construction"] = t.migration == transfer::MigrationKind::Delta;
+    j["valid_by_construction"] = v.claim(transfer::Claim::Kind::ValidByConstruction).holds();
     j["map"] = a.map;
     j["source_schema"] = in.map->source()->name();
     j["target_schema"] = in.map->target()->name();
@@ -256,10 +258,11 @@ int cmd_transfer(const TransferArgs& a, std::ostream& out, std::ostream& err) {
     transfer::TransferOptions options;
     options.keep_states = a.trace;
     options.rename_by_type = a.rename_by_type;
+    options.goal = in->target_goal;
+    options.goal_name = a.goal;
     Outcome r;
     r.t = transfer::transfer_plan(*in->map, *in->problem, *in->plan, options);
     r.transfer_peak_kib = transfer::peak_rss_kib();
-    r.verdict = judge(r.t, in->target_goal.get(), a.goal);
     if (a.replan) {
         plan::SearchOptions so;
         so.search = *plan::parse_search(a.search);
@@ -273,7 +276,7 @@ int cmd_transfer(const TransferArgs& a, std::ostream& out, std::ostream& err) {
     if (rc != kOk) {
         return rc;
     }
-    return r.verdict.valid ? kOk : kNo;
+    return r.t.verdict.valid() ? kOk : kNo;
 }
 
 } // namespace

@@ -40,7 +40,9 @@ std::string escape_html(std::string_view s) {
 
 namespace {
 
+using transfer::Fault;
 using transfer::TransferResult;
+using transfer::Verdict;
 
 constexpr std::string_view kStyle = R"(
 body { font-family: system-ui, -apple-system, "Segoe UI", Helvetica, Arial, sans-serif;
@@ -116,26 +118,9 @@ private:
     std::size_t count_ = 0;
 };
 
-struct Verdict {
-    bool valid = false;
-    std::string reason;
-    transfer::GoalSatisfaction goal;
-};
-
-Verdict verdict(const ReportInput& in) {
+std::string header_section(const ReportInput& in) {
     const TransferResult& t = *in.transfer;
-    Verdict v;
-    v.goal = in.goal.value_or(t.goal);
-    v.valid = in.valid.value_or(t.valid);
-    v.reason = !in.reason.empty() ? in.reason : t.reason;
-    if (!v.valid && v.reason.empty()) {
-        v.reason = "the intended goal is not satisfied";
-    }
-    return v;
-}
-
-std::string header_section(const ReportInput& in, const Verdict& v) {
-    const TransferResult& t = *in.transfer;
+    const Verdict& v = t.verdict;
     const auto& f = *in.map;
     std::string o;
     o += fmt::format("<h1>Plan transfer of {} along {}</h1>\n", escape_html(in.problem->name),
@@ -145,14 +130,14 @@ std::string header_section(const ReportInput& in, const Verdict& v) {
                      escape_html(in.map_name), escape_html(f.target()->name()),
                      escape_html(f.source()->name()), transfer::to_string(t.migration),
                      escape_html(in.problem->domain->name), in.plan->steps.size());
-    o += fmt::format("<p class=\"verdict {}\">{}</p>\n", v.valid ? "valid" : "invalid",
-                     v.valid ? "Valid: every step applies and the goal embeds monically"
-                             : "Invalid: " + escape_html(v.reason));
-    if (!t.source_valid) {
+    o += fmt::format("<p class=\"verdict {}\">{}</p>\n", v.valid() ? "valid" : "invalid",
+                     v.valid() ? "Valid: every step applies and the goal embeds monically"
+                               : "Invalid: " + escape_html(v.reason()));
+    if (const auto* source = v.find(Fault::Kind::SourcePlan)) {
         o += fmt::format("<p class=\"failed\">The source plan itself is invalid: {}</p>\n",
-                         escape_html(t.source_reason));
+                         escape_html(source->to_string()));
     }
-    if (t.migration == transfer::MigrationKind::Delta) {
+    if (v.claim(transfer::Claim::Kind::ValidByConstruction).holds()) {
         o += "<p class=\"muted\">A delta migration preserves pushouts: the transferred plan is "
              "valid by construction (paper, Appendix A); it was checked anyway.</p>\n";
     }
@@ -319,13 +304,16 @@ std::string steps_section(const ReportInput& in, Pictures& pictures) {
     for (std::size_t i = 0; i < t.steps.size(); ++i) {
         o += step_row(in, i, pictures);
     }
-    if (t.failed_step) {
-        std::size_t i = t.failed_step->index;
+    if (const auto* failed = t.verdict.failed_step()) {
+        std::size_t i = *failed->step;
         std::string source =
             i < in.plan->steps.size() ? in.plan->steps[i].to_string() : std::string("?");
+        std::string why = failed->kind == Fault::Kind::SourcePlan
+                              ? "the source plan fails here: " + failed->why
+                              : failed->why;
         o += fmt::format("<tr><td class=\"num\">{}</td><td><span class=\"step\">{}</span></td>"
                          "<td class=\"failed\">not transferred: {}</td></tr>\n",
-                         i + 1, escape_html(source), escape_html(t.failed_step->reason));
+                         i + 1, escape_html(source), escape_html(why));
         for (std::size_t j = i + 1; j < in.plan->steps.size(); ++j) {
             o += fmt::format("<tr><td class=\"num\">{}</td><td><span class=\"step\">{}</span>"
                              "</td><td class=\"muted\">(not reached)</td></tr>\n",
@@ -401,10 +389,9 @@ std::string html_report(const ReportInput& in) {
                        in.transfer != nullptr,
                    "html_report needs a map, a problem, a plan and a transfer");
     Pictures pictures;
-    Verdict v = verdict(in);
     std::string body;
-    body += header_section(in, v);
-    body += goal_section(v);
+    body += header_section(in);
+    body += goal_section(in.transfer->verdict);
     body += ontology_section(in, pictures);
     body += problem_section(in, pictures);
     body += steps_section(in, pictures);

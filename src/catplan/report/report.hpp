@@ -1,8 +1,9 @@
 #pragma once
 // An HTML report of a plan transfer, for a person: one self-contained page (inline CSS, SVG
 // pictures inlined, no scripts, nothing fetched from the network) with
-//   - the verdict (valid or not, and why), goal satisfaction with the unsatisfied statements,
-//     and the kind of migration;
+//   - the transfer's verdict (valid or not, and why), goal satisfaction with the unsatisfied
+//     statements (for the intended goal when the transfer was given one), and the kind of
+//     migration;
 //   - the two ontologies, the map's picture and its images in a table;
 //   - the source and target plans side by side, one row per step, with the bindings of each
 //     match (the target match is the source match carried through part names: that is why the
@@ -19,7 +20,6 @@
 #include "catplan/plan/domain.hpp"
 #include "catplan/transfer/transfer.hpp"
 
-#include <optional>
 #include <string>
 #include <string_view>
 
@@ -35,11 +35,6 @@ struct ReportInput {
     /// The transfer, made with TransferOptions::keep_states for the state pictures (without it
     /// the steps are listed with no pictures).
     const transfer::TransferResult* transfer = nullptr;
-    /// The outcome shown as the verdict (defaults to the transfer's): a caller that checks an
-    /// intended target goal of its own passes its figures here.
-    std::optional<transfer::GoalSatisfaction> goal;
-    std::optional<bool> valid;
-    std::string reason;
     /// Replanning in the target domain, when it was done.
     const transfer::Replan* replan = nullptr;
     /// The process's peak memory right after the transfer, in KiB (0 when unknown).

@@ -234,7 +234,7 @@ struct Made {
 
 TEST(Report, ShowsTheVerdictStepsAndPictures) {
     Made m;
-    ASSERT_TRUE(m.t.valid) << m.t.reason;
+    ASSERT_TRUE(m.t.verdict.valid()) << m.t.verdict.reason();
     const std::string& h = m.html;
     EXPECT_TRUE(contains(h, "<p class=\"verdict valid\">Valid")) << h.substr(0, 2000);
     EXPECT_TRUE(contains(h, "100%"));
@@ -261,7 +261,7 @@ TEST(Report, BindingsOfTheCarriedPartsAreBoldAlsoWhenRenamed) {
     for (bool rename : {false, true}) {
         SCOPED_TRACE(rename);
         Made m(false, "ToKitchen", rename);
-        ASSERT_TRUE(m.t.valid) << m.t.reason;
+        ASSERT_TRUE(m.t.verdict.valid()) << m.t.verdict.reason();
         // Each step's three parameters, bold in both columns.
         EXPECT_GE(count(m.html, "<li class=\"shared\">"), 6 * m.t.steps.size());
     }
@@ -284,7 +284,7 @@ TEST(Report, InvalidTransferShowsWhyAndTheUnsatisfiedStatements) {
     transfer::TransferOptions o;
     o.keep_states = true;
     auto t = transfer::transfer_plan(map, *fx.problem, one, o);
-    ASSERT_FALSE(t.valid);
+    ASSERT_FALSE(t.verdict.valid());
     ReportInput in;
     in.map = &map;
     in.map_name = "ToKitchen";
@@ -292,9 +292,10 @@ TEST(Report, InvalidTransferShowsWhyAndTheUnsatisfiedStatements) {
     in.plan = &one;
     in.transfer = &t;
     std::string h = html_report(in);
-    EXPECT_TRUE(contains(h, "<p class=\"verdict invalid\">Invalid: " + escape_html(t.reason)));
-    ASSERT_FALSE(t.goal.unsatisfied.empty());
-    for (const auto& u : t.goal.unsatisfied) {
+    EXPECT_TRUE(
+        contains(h, "<p class=\"verdict invalid\">Invalid: " + escape_html(t.verdict.reason())));
+    ASSERT_FALSE(t.verdict.goal.unsatisfied.empty());
+    for (const auto& u : t.verdict.goal.unsatisfied) {
         EXPECT_TRUE(contains(h, "<li><code>" + escape_html(u) + "</code></li>")) << u;
     }
     EXPECT_EQ(unbalanced_tags(h), "");
@@ -308,7 +309,7 @@ TEST(Report, FailedStepIsMarked) {
     transfer::TransferOptions o;
     o.keep_states = true;
     auto t = transfer::transfer_plan(map, *fx.problem, bad, o);
-    ASSERT_FALSE(t.valid);
+    ASSERT_FALSE(t.verdict.valid());
     ReportInput in;
     in.map = &map;
     in.map_name = "ToKitchen";
@@ -318,7 +319,7 @@ TEST(Report, FailedStepIsMarked) {
     std::string h = html_report(in);
     EXPECT_TRUE(contains(h, "verdict invalid"));
     EXPECT_TRUE(contains(h, "move(A, C, D)"));
-    if (t.failed_step) {
+    if (t.verdict.failed_step()) {
         EXPECT_TRUE(contains(h, "not transferred: "));
     } else {
         EXPECT_TRUE(contains(h, "The source plan itself is invalid"));

@@ -373,7 +373,9 @@ public:
              const TransferOptions& options, TransferResult& out)
         : f_(f), problem_(problem), plan_(plan), options_(options), out_(out) {}
 
-    void run() {
+    /// Replays the plan; returns the source plan's own fault when the replay did not stop in
+    /// the source (it comes after the target goal's in the verdict).
+    std::optional<Fault> run() {
         auto t0 = Clock::now();
         ACSet x0 = named(*problem_.initial);
         out_.target_domain = migrate_domain(f_, *problem_.domain);
@@ -396,9 +398,10 @@ public:
             keep_states();
         }
         out_.timings.apply_ms = ms_since(t0);
-        finish_source();
+        auto source = finish_source();
         out_.final_state = std::move(*y_).release();
         y_.reset();
+        return source;
     }
 
 private:
@@ -424,9 +427,12 @@ private:
         return &actions_.emplace(name, std::move(a)).first->second;
     }
 
+    std::string where(std::size_t i) const {
+        return fmt::format("step {} {}", i + 1, plan_.steps[i].to_string());
+    }
+
     bool fail_at(std::size_t i, const std::string& why) {
-        out_.failed_step = FailedStep{i, why};
-        out_.reason = fmt::format("step {} {}: {}", i + 1, plan_.steps[i].to_string(), why);
+        out_.verdict.faults.push_back({Fault::Kind::Step, i, where(i), why});
         return false;
     }
 
@@ -499,25 +505,38 @@ private:
     }
 
     void source_failure(std::size_t i, const std::string& why) {
-        out_.source_valid = false;
-        out_.source_reason = fmt::format("step {} {}: {}", i + 1, plan_.steps[i].to_string(), why);
-        out_.failed_step = FailedStep{i, "the source plan fails here: " + why};
-        out_.reason = "the source plan is invalid: " + out_.source_reason;
+        out_.verdict.faults.push_back({Fault::Kind::SourcePlan, i, where(i), why});
     }
 
-    void finish_source() {
-        if (out_.failed_step) {
-            if (out_.source_reason.empty()) {
-                // The target failed first; the source plan is judged on its own.
-                out_.source_valid = plan::validate_plan(problem_, plan_).valid;
+    // The source plan's fault when the replay did not stop in the source: its goal not reached,
+    // or, when the target stopped first, whatever validating the source plan on its own finds.
+    std::optional<Fault> finish_source() const {
+        const auto& faults = out_.verdict.faults;
+        if (!faults.empty()) {
+            if (faults.front().kind == Fault::Kind::SourcePlan) {
+                return std::nullopt;
             }
-            return;
+            auto v = plan::validate_plan(problem_, plan_);
+            if (v.valid) {
+                return std::nullopt;
+            }
+            Fault f{Fault::Kind::SourcePlan, v.failed_step, {}, v.reason};
+            if (v.failed_step) {
+                // validate_plan words a step's reason as "step 3 pickup(B): why".
+                f.where = where(*v.failed_step);
+                if (v.reason.rfind(f.where + ": ", 0) == 0) {
+                    f.why = v.reason.substr(f.where.size() + 2);
+                } else {
+                    f.where.clear();
+                }
+            }
+            return f;
         }
         auto g = plan::embed_goal(*problem_.goal, x_->state());
-        out_.source_valid = static_cast<bool>(g);
-        if (!g) {
-            out_.source_reason = "goal not reached: " + g.error();
+        if (g) {
+            return std::nullopt;
         }
+        return Fault{Fault::Kind::SourcePlan, std::nullopt, {}, "goal not reached: " + g.error()};
     }
 
     const SchemaMap& f_;
@@ -530,24 +549,49 @@ private:
     std::map<std::string, ActionPair, std::less<>> actions_;
 };
 
-void check_goal(TransferResult& out, const ACSet& y) {
+// The claim of Appendix A: a delta map preserves pushouts, so each migrated DPO step applies
+// and Y_i = Δ_F(X_i).
+Claim valid_by_construction(MigrationKind migration) {
+    Claim c;
+    c.kind = Claim::Kind::ValidByConstruction;
+    c.hypotheses.push_back(
+        {"F is a delta map (Δ_F preserves pushouts)", migration == MigrationKind::Delta});
+    return c;
+}
+
+// The goal checks and the verdict: Δ_F(G) embedded monically in y, then the source plan's own
+// fault, then the intended goal, if the options give one.
+void judge(TransferResult& out, const ACSet& y, std::optional<Fault> source,
+           const TransferOptions& options) {
     auto t0 = Clock::now();
+    Verdict& v = out.verdict;
     auto embedding = plan::embed_goal(*out.target_goal, y);
-    out.goal_reached = static_cast<bool>(embedding);
-    if (out.goal_reached) {
-        out.goal.total = goal_statements(*out.target_goal).size();
-        out.goal.satisfied = out.goal.total;
-    } else {
-        out.goal = goal_satisfaction(*out.target_goal, y);
+    if (!embedding) {
+        v.faults.push_back(
+            {Fault::Kind::Goal, std::nullopt, {}, "goal not reached: " + embedding.error()});
     }
-    if (!out.failed_step) {
-        out.valid = out.goal_reached && out.source_valid;
-        if (!out.goal_reached) {
-            out.reason = "goal not reached: " + embedding.error();
-        } else if (!out.source_valid) {
-            out.reason = "the source plan is invalid: " + out.source_reason;
+    if (source) {
+        v.faults.push_back(std::move(*source));
+    }
+    if (options.goal) {
+        CATPLAN_ASSERT(&options.goal->schema() == &y.schema(),
+                       "the intended goal must be on the map's target schema");
+        v.goal = goal_satisfaction(*options.goal, y);
+        v.goal_name = options.goal_name;
+        if (v.goal.satisfied != v.goal.total) {
+            v.faults.push_back({Fault::Kind::IntendedGoal,
+                                std::nullopt,
+                                {},
+                                fmt::format("the intended goal {} is not satisfied", v.goal_name)});
         }
+    } else if (embedding) {
+        v.goal.total = goal_statements(*out.target_goal).size();
+        v.goal.satisfied = v.goal.total;
+    } else {
+        v.goal = goal_satisfaction(*out.target_goal, y);
     }
+    v.status = v.faults.empty() ? Verdict::Status::Valid : Verdict::Status::Invalid;
+    v.claims = {valid_by_construction(out.migration)};
     out.timings.validate_ms = ms_since(t0);
 }
 
@@ -581,8 +625,8 @@ TransferResult transfer_plan(const SchemaMap& f, const plan::Problem& problem,
     auto t0 = Clock::now();
     TransferResult out;
     out.migration = f.is_delta() ? MigrationKind::Delta : MigrationKind::Conjunctive;
-    Transfer(f, problem, plan, options, out).run();
-    check_goal(out, *out.final_state);
+    auto source = Transfer(f, problem, plan, options, out).run();
+    judge(out, *out.final_state, std::move(source), options);
     out.timings.total_ms = ms_since(t0);
     return out;
 }

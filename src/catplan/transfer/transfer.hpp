@@ -15,14 +15,16 @@
 //      match exists the transfer stops at that step and says which part of the precondition
 //      is missing. Name indexes are kept in step with each rewrite, so a step costs what it
 //      touches.
-//   3. the goal is checked with a monic morphism Δ_F(G) -> Y_n, and goal satisfaction (the
-//      paper's Metric 1, goal.hpp) is computed.
-// For a delta map, Δ_F preserves pushouts, so the transferred plan is valid by construction
-// (paper Appendix A); it is still checked.
+//   3. the goal is checked with a monic morphism Δ_F(G) -> Y_n and, when the caller states the
+//      goal intended in the target domain (TransferOptions::goal), that goal too; goal
+//      satisfaction (the paper's Metric 1, goal.hpp) is computed for the goal judged by.
+// The outcome is one Verdict (verdict.hpp): valid or not, every fault, the goal's figure, and
+// the claims with their hypotheses. For a delta map, Δ_F preserves pushouts, so the transferred
+// plan is valid by construction (paper Appendix A); it is still checked.
 //
 //   auto t = transfer_plan(map, *problem, plan);
 //   for (const auto& s : t.steps) std::cout << s.target.to_string() << "\n";
-//   if (!t.valid) std::cout << t.reason << "\n";
+//   if (!t.verdict.valid()) std::cout << t.verdict.reason() << "\n";
 
 #include "catplan/acset/acset.hpp"
 #include "catplan/hom/morphism.hpp"
@@ -30,7 +32,9 @@
 #include "catplan/plan/domain.hpp"
 #include "catplan/plan/search.hpp"
 #include "catplan/transfer/goal.hpp"
+#include "catplan/transfer/verdict.hpp"
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -65,6 +69,13 @@ struct TransferOptions {
     bool keep_states = false;
     /// Rename the target's named parts after their most specific target type (bread1, ...).
     bool rename_by_type = false;
+    /// The goal intended in the target domain (an instance of F's target schema): the verdict
+    /// then also asks that it be satisfied in the last target state, and goal satisfaction is
+    /// measured for it. Null to judge by Δ_F(G) alone.
+    std::shared_ptr<const ACSet> goal;
+    /// The intended goal's name, for the verdict's words ("the intended goal Sandwich is not
+    /// satisfied").
+    std::string goal_name;
 };
 
 /// One transferred step.
@@ -77,12 +88,6 @@ struct StepTransfer {
     std::string target_bindings; ///< the same for the target match
     /// Parameters of the source action that its migration lost (the map does not see them).
     std::vector<std::string> lost_parameters;
-};
-
-/// The step that could not be transferred.
-struct FailedStep {
-    std::size_t index = 0; ///< 0-based
-    std::string reason;
 };
 
 /// Wall-clock times of the phases, in milliseconds.
@@ -98,20 +103,11 @@ struct TransferResult {
     MigratedDomain target_domain;
     std::shared_ptr<const ACSet> target_initial; ///< Y_0 = Δ_F(I)
     std::shared_ptr<const ACSet> target_goal;    ///< Δ_F(G)
-    /// Whether the source plan is valid on the source problem, and why not.
-    bool source_valid = false;
-    std::string source_reason;
-    /// The steps transferred (all of them, or those before the failed one).
+    /// The steps transferred (all of them, or those before the one the verdict's failed_step
+    /// names).
     std::vector<StepTransfer> steps;
-    std::optional<FailedStep> failed_step;
-    /// A monic Δ_F(G) -> Y_n exists (false when a step failed).
-    bool goal_reached = false;
-    /// Every step transferred and the goal reached.
-    bool valid = false;
-    /// Why the transfer is invalid ("step 3 pickup(B): ..." or "goal not reached: ...").
-    std::string reason;
-    /// The paper's Metric 1 on the last target state reached.
-    GoalSatisfaction goal;
+    /// Valid or not and why, the goal's figure, and the claims with their hypotheses.
+    Verdict verdict;
     /// With keep_states: X_0 .. X_k and Y_0 .. Y_k.
     std::vector<ACSet> source_states, target_states;
     /// The last target state reached.

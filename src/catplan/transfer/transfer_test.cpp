@@ -176,8 +176,8 @@ TEST(Transfer, DeltaMapGivesTheMigratedStates) {
     opt.keep_states = true;
     auto r = transfer_plan(f, *fx.problem, fx.plan, opt);
     EXPECT_EQ(r.migration, MigrationKind::Delta);
-    EXPECT_TRUE(r.source_valid);
-    ASSERT_TRUE(r.valid) << r.reason;
+    EXPECT_TRUE(r.verdict.source_valid());
+    ASSERT_TRUE(r.verdict.valid()) << r.verdict.reason();
     EXPECT_EQ(target_plan(r), (std::vector<std::string>{"move(A, B, C)", "move(B, D, A)"}));
     ASSERT_EQ(r.target_states.size(), 3u);
     ASSERT_EQ(r.source_states.size(), 3u);
@@ -186,8 +186,8 @@ TEST(Transfer, DeltaMapGivesTheMigratedStates) {
         EXPECT_TRUE(hom::is_isomorphic(r.target_states[i], migrate::migrate(f, r.source_states[i])))
             << "step " << i;
     }
-    EXPECT_EQ(r.goal.satisfied, r.goal.total);
-    EXPECT_EQ(r.goal.total, 7u); // 2 blocks, 2 colours, 1 fact with 2 homs
+    EXPECT_EQ(r.verdict.goal.satisfied, r.verdict.goal.total);
+    EXPECT_EQ(r.verdict.goal.total, 7u); // 2 blocks, 2 colours, 1 fact with 2 homs
 }
 
 TEST(Transfer, SwappedHomsTransferConsistently) {
@@ -195,7 +195,7 @@ TEST(Transfer, SwappedHomsTransferConsistently) {
     // goal are read through the same map).
     Fixture fx;
     auto r = transfer_plan(renaming_map(fx.t, true), *fx.problem, fx.plan);
-    EXPECT_TRUE(r.valid) << r.reason;
+    EXPECT_TRUE(r.verdict.valid()) << r.verdict.reason();
 }
 
 TEST(Transfer, ConjunctiveMapCarriesMatchesByName) {
@@ -204,13 +204,13 @@ TEST(Transfer, ConjunctiveMapCarriesMatchesByName) {
     SchemaMap f = kitchen_map(fx.t, k);
     auto r = transfer_plan(f, *fx.problem, fx.plan);
     EXPECT_EQ(r.migration, MigrationKind::Conjunctive);
-    ASSERT_TRUE(r.valid) << r.reason;
+    ASSERT_TRUE(r.verdict.valid()) << r.verdict.reason();
     EXPECT_EQ(target_plan(r), (std::vector<std::string>{"move(A, B, C)", "move(B, D, A)"}));
     EXPECT_EQ(r.steps[0].target_bindings.find("b ↦ A"), 0u) << r.steps[0].target_bindings;
     // The purple blocks A and C are bread in the target.
     ASSERT_TRUE(r.final_state);
     EXPECT_EQ(r.final_state->num_parts(k.bread), 2u);
-    EXPECT_DOUBLE_EQ(r.goal.fraction(), 1.0);
+    EXPECT_DOUBLE_EQ(r.verdict.goal.fraction(), 1.0);
 }
 
 TEST(Transfer, RenameByTypeNamesPartsAfterTheirMostSpecificType) {
@@ -220,7 +220,7 @@ TEST(Transfer, RenameByTypeNamesPartsAfterTheirMostSpecificType) {
     TransferOptions opt;
     opt.rename_by_type = true;
     auto r = transfer_plan(f, *fx.problem, fx.plan, opt);
-    ASSERT_TRUE(r.valid) << r.reason;
+    ASSERT_TRUE(r.verdict.valid()) << r.verdict.reason();
     // A and C are bread (is-a Item); B and D only items.
     EXPECT_EQ(target_plan(r), (std::vector<std::string>{"move(bread1, item1, bread2)",
                                                         "move(item1, item2, bread1)"}));
@@ -253,15 +253,97 @@ TEST(Transfer, InvalidSourcePlanIsReported) {
     plan::Plan bad;
     bad.steps = {{"move", {"A", "C", "D"}, {}}};
     auto r = transfer_plan(renaming_map(fx.t, false), *fx.problem, bad);
-    EXPECT_FALSE(r.source_valid);
-    EXPECT_FALSE(r.valid);
-    EXPECT_NE(r.reason.find("the source plan is invalid"), std::string::npos) << r.reason;
+    EXPECT_FALSE(r.verdict.source_valid());
+    EXPECT_FALSE(r.verdict.valid());
+    EXPECT_NE(r.verdict.reason().find("the source plan is invalid"), std::string::npos)
+        << r.verdict.reason();
+}
+
+// A goal in the Kitchen schema: n bread slices, each with the item it is.
+std::shared_ptr<const ACSet> bread_goal(const Kitchen& k, int n) {
+    auto g = std::make_shared<ACSet>(k.s);
+    for (int i = 0; i < n; ++i) {
+        Part item = g->add_part(k.item);
+        Part b = g->add_part(k.bread);
+        g->set_subpart(k.bread_is_item, b, item);
+    }
+    return g;
+}
+
+TEST(Transfer, TheIntendedGoalJudgesTheVerdict) {
+    Fixture fx;
+    Kitchen k = kitchen();
+    SchemaMap f = kitchen_map(fx.t, k);
+    TransferOptions opt;
+    opt.goal = bread_goal(k, 2); // A and C are purple: two slices
+    opt.goal_name = "TwoSlices";
+    auto met = transfer_plan(f, *fx.problem, fx.plan, opt);
+    ASSERT_TRUE(met.verdict.valid()) << met.verdict.reason();
+    EXPECT_EQ(met.verdict.goal_name, "TwoSlices");
+    EXPECT_EQ(met.verdict.goal.total, 6u); // 4 parts, 2 hom values
+    EXPECT_EQ(met.verdict.goal.satisfied, 6u);
+
+    opt.goal = bread_goal(k, 3);
+    opt.goal_name = "ThreeSlices";
+    auto unmet = transfer_plan(f, *fx.problem, fx.plan, opt);
+    const Verdict& v = unmet.verdict;
+    EXPECT_FALSE(v.valid());
+    EXPECT_EQ(v.status, Verdict::Status::Invalid);
+    // Every step applies and Δ_F(G) embeds: the intended goal is the only fault.
+    ASSERT_EQ(v.faults.size(), 1u);
+    EXPECT_EQ(v.faults[0].kind, Fault::Kind::IntendedGoal);
+    EXPECT_EQ(v.reason(), "the intended goal ThreeSlices is not satisfied");
+    EXPECT_TRUE(v.source_valid());
+    EXPECT_EQ(v.failed_step(), nullptr);
+    EXPECT_EQ(v.goal.total, 9u);
+    EXPECT_EQ(v.goal.satisfied, 7u); // the third slice and its hom value have no purple block
+    EXPECT_EQ(v.goal.unsatisfied.size(), 2u);
+}
+
+TEST(Transfer, FaultsComeInTheOrderTheTransferMeetsThem) {
+    // The empty plan leaves A on B (purple on red): neither Δ_F(G) nor G is reached; the target
+    // goal's fault decides, the source plan's follows.
+    Fixture fx;
+    auto r = transfer_plan(renaming_map(fx.t, false), *fx.problem, plan::Plan{});
+    const Verdict& v = r.verdict;
+    ASSERT_EQ(v.faults.size(), 2u);
+    EXPECT_EQ(v.faults[0].kind, Fault::Kind::Goal);
+    EXPECT_EQ(v.faults[1].kind, Fault::Kind::SourcePlan);
+    EXPECT_EQ(v.reason().rfind("goal not reached: ", 0), 0u) << v.reason();
+    EXPECT_FALSE(v.source_valid());
+    EXPECT_EQ(v.failed_step(), nullptr);
+
+    // A source step that does not apply stops the replay: that fault comes first.
+    plan::Plan bad;
+    bad.steps = {{"move", {"A", "C", "D"}, {}}};
+    auto s = transfer_plan(renaming_map(fx.t, false), *fx.problem, bad);
+    const Fault* failed = s.verdict.failed_step();
+    ASSERT_NE(failed, nullptr);
+    EXPECT_EQ(failed->kind, Fault::Kind::SourcePlan);
+    EXPECT_EQ(failed->step, 0u);
+    EXPECT_EQ(failed->where, "step 1 move(A, C, D)");
+    EXPECT_EQ(s.verdict.reason(), "the source plan is invalid: " + failed->to_string());
+    EXPECT_TRUE(s.steps.empty());
+}
+
+TEST(Transfer, ValidByConstructionIsClaimedOnlyForADeltaMap) {
+    Fixture fx;
+    auto delta = transfer_plan(renaming_map(fx.t, false), *fx.problem, fx.plan);
+    EXPECT_TRUE(delta.verdict.claim(Claim::Kind::ValidByConstruction).holds());
+    Kitchen k = kitchen();
+    auto conjunctive = transfer_plan(kitchen_map(fx.t, k), *fx.problem, fx.plan);
+    const Claim& c = conjunctive.verdict.claim(Claim::Kind::ValidByConstruction);
+    EXPECT_FALSE(c.holds());
+    ASSERT_NE(c.failing(), nullptr);
+    EXPECT_EQ(c.failing()->statement, "F is a delta map (Δ_F preserves pushouts)");
+    // The claim is about the method, not the outcome: the conjunctive transfer is still valid.
+    EXPECT_TRUE(conjunctive.verdict.valid());
 }
 
 TEST(Transfer, ReplanFindsAPlanAndMeasuresTheEditDistance) {
     Fixture fx;
     auto r = transfer_plan(renaming_map(fx.t, false), *fx.problem, fx.plan);
-    ASSERT_TRUE(r.valid);
+    ASSERT_TRUE(r.verdict.valid());
     plan::SearchOptions opt;
     auto rp = replan(r, opt);
     ASSERT_EQ(rp.search.status, plan::SearchStatus::Solved);
