@@ -6,6 +6,7 @@
 
 #include "catplan/acset/printer.hpp"
 #include "catplan/lang/module.hpp"
+#include "catplan/migrate/describe.hpp"
 #include "catplan/schema/printer.hpp"
 
 #include <gtest/gtest.h>
@@ -82,7 +83,7 @@ std::string print_declaration(const catplan::lang::Declaration& d) {
     case DeclKind::Problem:
         return out + "\n";
     case DeclKind::Map:
-        return out + catplan::lang::describe_map(*d.map) + "\n";
+        return out + catplan::migrate::map_text(catplan::migrate::describe_map(*d.map)) + "\n";
     }
     return out;
 }

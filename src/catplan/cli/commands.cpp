@@ -9,6 +9,7 @@
 #include "catplan/hom/morphism.hpp"
 #include "catplan/json/json.hpp"
 #include "catplan/lang/module.hpp"
+#include "catplan/migrate/describe.hpp"
 #include "catplan/plan/search.hpp"
 #include "catplan/plan/validate.hpp"
 #include "catplan/schema/printer.hpp"
@@ -68,7 +69,7 @@ int cmd_show(const std::string& file, const std::string& name, std::ostream& out
     if (d->kind == lang::DeclKind::Schema) {
         out << schema::describe(*d->schema);
     } else if (d->kind == lang::DeclKind::Map) {
-        out << lang::summarize(*d) << "\n" << lang::describe_map(*d->map);
+        out << lang::summarize(*d) << "\n" << migrate::map_text(migrate::describe_map(*d->map));
     } else if (d->kind != lang::DeclKind::Instance) {
         out << lang::summarize(*d) << "\n";
     } else {

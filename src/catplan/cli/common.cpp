@@ -147,6 +147,83 @@ plan::ProblemPtr find_problem(const lang::Module& m, const std::string& file,
     return p->problem;
 }
 
+void add_transfer_input_options(CLI::App* cmd, TransferArgs& a) {
+    cmd->add_option("FILE", a.file,
+                    "language file declaring (or importing) the map, the domain and the problem")
+        ->required();
+    cmd->add_option("--map", a.map, "the ontology map F : target -> source")->required();
+    cmd->add_option("--domain", a.domain, "the source domain (default: the problem's)");
+    cmd->add_option("--problem", a.problem, "the source problem")->required();
+    cmd->add_option("--plan", a.plan_file, "the source plan: one step per line")->required();
+    cmd->add_option("--goal", a.goal,
+                    "an instance of the target schema: the goal intended in the target domain "
+                    "(default: the migrated source goal)");
+    cmd->add_flag("--rename-by-type", a.rename_by_type,
+                  "name target parts after their type (bread1, tomato1, ...)");
+}
+
+void add_replan_options(CLI::App* cmd, TransferArgs& a, const std::string& replan_help) {
+    cmd->add_flag("--replan", a.replan, replan_help);
+    cmd->add_option("--search", a.search, "with --replan: bfs, astar or gbfs")
+        ->check(CLI::IsMember({"bfs", "astar", "gbfs"}))
+        ->capture_default_str();
+    cmd->add_option("--heuristic", a.heuristic, "with --replan: blind, goalcount, hadd or hff")
+        ->check(CLI::IsMember({"blind", "goalcount", "hadd", "hff"}))
+        ->capture_default_str();
+    cmd->add_option("--max-time", a.max_time, "with --replan: stop the search after S seconds")
+        ->check(CLI::NonNegativeNumber)
+        ->capture_default_str();
+}
+
+plan::SearchOptions replan_options(const TransferArgs& a) {
+    plan::SearchOptions so;
+    so.search = *plan::parse_search(a.search);
+    so.heuristic = *plan::parse_heuristic(a.heuristic);
+    so.max_seconds = a.max_time;
+    return so;
+}
+
+std::optional<TransferInputs> load_transfer_inputs(Session& s, const TransferArgs& a,
+                                                   std::ostream& err) {
+    auto m = load(s, a.file, err);
+    if (!m) {
+        return std::nullopt;
+    }
+    TransferInputs in;
+    if (const auto* d = find_declaration(*m, a.file, a.map, lang::DeclKind::Map, err)) {
+        in.map = d->map;
+    }
+    // The problem of the loaded module: loading FILE again would make new schemas, which the
+    // map would not be on.
+    in.problem = find_problem(*m, a.file, a.domain, a.problem, err);
+    if (in.map == nullptr || in.problem == nullptr) {
+        return std::nullopt;
+    }
+    if (in.map->source() != in.problem->domain->schema) {
+        error(err, fmt::format("map '{}' goes from {} to {}, but problem '{}' is on {}", a.map,
+                               in.map->target()->name(), in.map->source()->name(), a.problem,
+                               in.problem->domain->schema->name()));
+        return std::nullopt;
+    }
+    if (!a.goal.empty()) {
+        in.target_goal = find_target_goal(*m, a.file, a.goal, in.map->target(), err);
+        if (in.target_goal == nullptr) {
+            return std::nullopt;
+        }
+    }
+    auto f = s.sources.add_file(a.plan_file);
+    if (!f) {
+        error(err, fmt::format("cannot read '{}'", a.plan_file));
+        return std::nullopt;
+    }
+    auto plan = plan::parse_plan(*f, s.sources, s.sink);
+    if (report(s, err) || !plan) {
+        return std::nullopt;
+    }
+    in.plan = std::move(*plan);
+    return in;
+}
+
 std::optional<int> CommandTable::run_parsed(std::ostream& out, std::ostream& err) const {
     for (const auto& [command, run] : entries_) {
         if (command->parsed()) {

@@ -7,6 +7,7 @@
 #include "catplan/base/source.hpp"
 #include "catplan/lang/module.hpp"
 #include "catplan/plan/domain.hpp"
+#include "catplan/plan/search.hpp"
 #include "catplan/rewrite/rule.hpp"
 #include "catplan/transfer/transfer.hpp"
 
@@ -74,6 +75,38 @@ std::shared_ptr<const acset::ACSet> find_target_goal(const lang::Module& m, cons
                                                      const std::string& name,
                                                      const schema::SchemaPtr& target,
                                                      std::ostream& err);
+
+/// What `transfer` and `report` read from their command lines.
+struct TransferArgs {
+    std::string file, map, domain, problem, plan_file, goal;
+    bool rename_by_type = false;
+    /// Replanning in the target domain (--replan and its search settings).
+    bool replan = false;
+    std::string search = "bfs", heuristic = "hff";
+    double max_time = 60;
+};
+
+/// Adds FILE, --map, --domain, --problem, --plan, --goal and --rename-by-type to cmd.
+void add_transfer_input_options(CLI::App* cmd, TransferArgs& a);
+
+/// Adds --replan (described by replan_help), --search, --heuristic and --max-time to cmd.
+void add_replan_options(CLI::App* cmd, TransferArgs& a, const std::string& replan_help);
+
+/// The search the replan options ask for.
+plan::SearchOptions replan_options(const TransferArgs& a);
+
+/// Everything a transfer reads: the map, the source problem (of the same loaded module, so the
+/// map is on its schema), the plan, and with --goal the goal intended in the target domain.
+struct TransferInputs {
+    std::shared_ptr<const migrate::SchemaMap> map;
+    plan::ProblemPtr problem;
+    plan::Plan plan;
+    std::shared_ptr<const acset::ACSet> target_goal;
+};
+
+/// Loads the inputs a's names; nullopt with every error printed.
+std::optional<TransferInputs> load_transfer_inputs(Session& s, const TransferArgs& a,
+                                                   std::ostream& err);
 
 /// The subcommands and what runs each when it is the one parsed.
 class CommandTable {

@@ -1,5 +1,5 @@
-// `catplan transfer` (plan transfer along an ontology map, the paper's Algorithm 1) and
-// `catplan migrate-domain` (the generated target actions, paper §V.C.3).
+// `catplan transfer`: plan transfer along an ontology map (the paper's Algorithm 1), printed as
+// text or JSON with its verdict.
 
 #include "catplan/acset/printer.hpp"
 #include "catplan/cli/commands.hpp"
@@ -9,6 +9,7 @@
 #include "catplan/transfer/transfer.hpp"
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <fmt/format.h>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -17,61 +18,11 @@
 namespace catplan::cli {
 namespace {
 
-struct TransferArgs {
-    std::string file, map, domain, problem, plan_file, goal, format = "text", output;
-    bool rename_by_type = false, trace = false, replan = false, no_timing = false;
-    std::string search = "bfs", heuristic = "hff";
-    double max_time = 60;
+struct TransferCommandArgs {
+    TransferArgs in;
+    std::string format = "text", output;
+    bool trace = false, no_timing = false;
 };
-
-// Everything a transfer reads from FILE.
-struct TransferInputs {
-    std::shared_ptr<const migrate::SchemaMap> map;
-    plan::ProblemPtr problem;
-    std::optional<plan::Plan> plan;
-    std::shared_ptr<const acset::ACSet> target_goal; // --goal
-};
-
-std::shared_ptr<const migrate::SchemaMap> find_map(const lang::Module& m, const std::string& file,
-                                                   const std::string& name, std::ostream& err) {
-    const auto* d = find_declaration(m, file, name, lang::DeclKind::Map, err);
-    return d == nullptr ? nullptr : d->map;
-}
-
-std::optional<TransferInputs> load_inputs(Session& s, const TransferArgs& a, std::ostream& err) {
-    auto m = load(s, a.file, err);
-    if (!m) {
-        return std::nullopt;
-    }
-    TransferInputs in;
-    in.map = find_map(*m, a.file, a.map, err);
-    in.problem = find_problem(*m, a.file, a.domain, a.problem, err);
-    if (in.map == nullptr || in.problem == nullptr) {
-        return std::nullopt;
-    }
-    if (in.map->source() != in.problem->domain->schema) {
-        error(err, fmt::format("map '{}' goes from {} to {}, but problem '{}' is on {}", a.map,
-                               in.map->target()->name(), in.map->source()->name(), a.problem,
-                               in.problem->domain->schema->name()));
-        return std::nullopt;
-    }
-    if (!a.goal.empty()) {
-        in.target_goal = find_target_goal(*m, a.file, a.goal, in.map->target(), err);
-        if (in.target_goal == nullptr) {
-            return std::nullopt;
-        }
-    }
-    auto f = s.sources.add_file(a.plan_file);
-    if (!f) {
-        error(err, fmt::format("cannot read '{}'", a.plan_file));
-        return std::nullopt;
-    }
-    in.plan = plan::parse_plan(*f, s.sources, s.sink);
-    if (report(s, err) || !in.plan) {
-        return std::nullopt;
-    }
-    return in;
-}
 
 std::string percent(const transfer::GoalSatisfaction& g) {
     return fmt::format("{:.0f}% ({} of {} goal statements{})", 100 * g.fraction(), g.satisfied,
@@ -79,14 +30,13 @@ std::string percent(const transfer::GoalSatisfaction& g) {
 }
 
 std::string map_brief(const migrate::SchemaMap& f) {
-    std::string text;
-    for (const auto& line : migrate::describe_map(f)) {
-        if (line.target.kind == schema::GeneratorKind::Attr) {
-            continue; // the attributes' defaults make the brief long; `catplan show` has them
-        }
-        text += fmt::format("  {} ⇒ {}\n", line.name, line.image);
-    }
-    return text;
+    auto lines = migrate::describe_map(f);
+    // The attributes' defaults make the brief long; `catplan show` has them.
+    lines.erase(
+        std::remove_if(lines.begin(), lines.end(),
+                       [](const auto& l) { return l.target.kind == schema::GeneratorKind::Attr; }),
+        lines.end());
+    return migrate::map_text(lines);
 }
 
 std::vector<std::string> plan_strings(const std::vector<plan::Step>& steps) {
@@ -112,23 +62,23 @@ struct Outcome {
     std::optional<transfer::Replan> replan;
 };
 
-std::string text_report(const TransferArgs& a, const TransferInputs& in, const Outcome& r) {
+std::string text_report(const TransferCommandArgs& a, const TransferInputs& in, const Outcome& r) {
     const auto& t = r.t;
     const auto& v = t.verdict;
     const auto& goal = v.goal;
     const auto& rp = r.replan;
     const auto& f = *in.map;
     std::string o;
-    o += fmt::format("transfer of {} ({}) along {} : {} -> {} ({} migration)\n", a.problem,
-                     in.problem->domain->name, a.map, f.target()->name(), f.source()->name(),
+    o += fmt::format("transfer of {} ({}) along {} : {} -> {} ({} migration)\n", a.in.problem,
+                     in.problem->domain->name, a.in.map, f.target()->name(), f.source()->name(),
                      transfer::to_string(t.migration));
     o += fmt::format("map:\n{}", map_brief(f));
-    o += fmt::format("source plan ({} steps): {}\n", in.plan->steps.size(),
+    o += fmt::format("source plan ({} steps): {}\n", in.plan.steps.size(),
                      v.source_valid()
                          ? "valid"
                          : "invalid: " + v.find(transfer::Fault::Kind::SourcePlan)->to_string());
-    for (std::size_t i = 0; i < in.plan->steps.size(); ++i) {
-        o += fmt::format("  {}. {}\n", i + 1, in.plan->steps[i].to_string());
+    for (std::size_t i = 0; i < in.plan.steps.size(); ++i) {
+        o += fmt::format("  {}. {}\n", i + 1, in.plan.steps[i].to_string());
     }
     o += fmt::format("target plan ({} steps):\n", t.steps.size());
     for (std::size_t i = 0; i < t.steps.size(); ++i) {
@@ -146,7 +96,7 @@ std::string text_report(const TransferArgs& a, const TransferInputs& in, const O
     }
     if (const auto* failed = v.failed_step()) {
         o += fmt::format("  {}. {}: not transferred\n", *failed->step + 1,
-                         in.plan->steps[*failed->step].to_string());
+                         in.plan.steps[*failed->step].to_string());
     }
     if (v.claim(transfer::Claim::Kind::ValidByConstruction).holds()) {
         o += "a delta migration preserves pushouts: the transferred plan is valid by "
@@ -166,7 +116,7 @@ std::string text_report(const TransferArgs& a, const TransferInputs& in, const O
                          tm.total_ms, tm.migrate_ms, tm.apply_ms, tm.validate_ms);
     }
     if (rp) {
-        o += fmt::format("replanning in {} ({}): {}", t.target_domain.domain->name, a.search,
+        o += fmt::format("replanning in {} ({}): {}", t.target_domain.domain->name, a.in.search,
                          plan::to_string(rp->search.status));
         if (rp->search.plan) {
             o += fmt::format(", {} steps, edit distance to the transferred plan {}",
@@ -197,11 +147,12 @@ std::string text_report(const TransferArgs& a, const TransferInputs& in, const O
     return o;
 }
 
-nlohmann::json json_report(const TransferArgs& a, const TransferInputs& in, const Outcome& r) {
+nlohmann::json json_report(const TransferCommandArgs& a, const TransferInputs& in,
+                           const Outcome& r) {
     const auto& t = r.t;
     const auto& v = t.verdict;
     nlohmann::json j;
-    j["source_plan"] = plan_strings(in.plan->steps);
+    j["source_plan"] = plan_strings(in.plan.steps);
     j["source_valid"] = v.source_valid();
     j["target_plan"] = plan_strings(target_steps(t));
     j["valid"] = v.valid();
@@ -216,7 +167,7 @@ nlohmann::json json_report(const TransferArgs& a, const TransferInputs& in, cons
     j["unsatisfied"] = v.goal.unsatisfied;
     j["migration"] = std::string(transfer::to_string(t.migration));
     j["valid_by_construction"] = v.claim(transfer::Claim::Kind::ValidByConstruction).holds();
-    j["map"] = a.map;
+    j["map"] = a.in.map;
     j["source_schema"] = in.map->source()->name();
     j["target_schema"] = in.map->target()->name();
     nlohmann::json actions = nlohmann::json::array();
@@ -249,26 +200,22 @@ nlohmann::json json_report(const TransferArgs& a, const TransferInputs& in, cons
     return j;
 }
 
-int cmd_transfer(const TransferArgs& a, std::ostream& out, std::ostream& err) {
+int cmd_transfer(const TransferCommandArgs& a, std::ostream& out, std::ostream& err) {
     Session s;
-    auto in = load_inputs(s, a, err);
+    auto in = load_transfer_inputs(s, a.in, err);
     if (!in) {
         return kBadInput;
     }
     transfer::TransferOptions options;
     options.keep_states = a.trace;
-    options.rename_by_type = a.rename_by_type;
+    options.rename_by_type = a.in.rename_by_type;
     options.goal = in->target_goal;
-    options.goal_name = a.goal;
+    options.goal_name = a.in.goal;
     Outcome r;
-    r.t = transfer::transfer_plan(*in->map, *in->problem, *in->plan, options);
+    r.t = transfer::transfer_plan(*in->map, *in->problem, in->plan, options);
     r.transfer_peak_kib = transfer::peak_rss_kib();
-    if (a.replan) {
-        plan::SearchOptions so;
-        so.search = *plan::parse_search(a.search);
-        so.heuristic = *plan::parse_heuristic(a.heuristic);
-        so.max_seconds = a.max_time;
-        r.replan = transfer::replan(r.t, so);
+    if (a.in.replan) {
+        r.replan = transfer::replan(r.t, replan_options(a.in));
     }
     std::string text =
         a.format == "json" ? json_report(a, *in, r).dump(2) + "\n" : text_report(a, *in, r);
@@ -282,38 +229,17 @@ int cmd_transfer(const TransferArgs& a, std::ostream& out, std::ostream& err) {
 } // namespace
 
 void add_transfer_commands(CLI::App& app, CommandTable& table) {
-    auto a = std::make_shared<TransferArgs>();
+    auto a = std::make_shared<TransferCommandArgs>();
     auto* cmd = app.add_subcommand(
         "transfer", "Transfer a plan along an ontology map and validate it in the target domain "
                     "(exit 1 when the transferred plan is invalid)");
-    cmd->add_option("FILE", a->file,
-                    "language file declaring (or importing) the map, the "
-                    "domain and the problem")
-        ->required();
-    cmd->add_option("--map", a->map, "the ontology map F : target -> source")->required();
-    cmd->add_option("--domain", a->domain, "the source domain (default: the problem's)");
-    cmd->add_option("--problem", a->problem, "the source problem")->required();
-    cmd->add_option("--plan", a->plan_file, "the source plan: one step per line")->required();
-    cmd->add_option("--goal", a->goal,
-                    "an instance of the target schema: the goal intended in the target domain "
-                    "(default: the migrated source goal)");
-    cmd->add_flag("--rename-by-type", a->rename_by_type,
-                  "name target parts after their type (bread1, tomato1, ...)");
+    add_transfer_input_options(cmd, a->in);
     cmd->add_flag("--trace", a->trace, "print every target state as tables");
     cmd->add_option("--format", a->format, "text or json")
         ->check(CLI::IsMember({"text", "json"}))
         ->capture_default_str();
-    cmd->add_flag("--replan", a->replan,
-                  "also plan from scratch in the target domain and compare (paper Metric 5)");
-    cmd->add_option("--search", a->search, "with --replan: bfs, astar or gbfs")
-        ->check(CLI::IsMember({"bfs", "astar", "gbfs"}))
-        ->capture_default_str();
-    cmd->add_option("--heuristic", a->heuristic, "with --replan: blind, goalcount, hadd or hff")
-        ->check(CLI::IsMember({"blind", "goalcount", "hadd", "hff"}))
-        ->capture_default_str();
-    cmd->add_option("--max-time", a->max_time, "with --replan: stop the search after S seconds")
-        ->check(CLI::NonNegativeNumber)
-        ->capture_default_str();
+    add_replan_options(cmd, a->in,
+                       "also plan from scratch in the target domain and compare (paper Metric 5)");
     cmd->add_option("-o,--output", a->output, "write the report to this file");
     cmd->add_flag("--no-timing", a->no_timing, "leave out times and memory (reproducible output)");
     table.add(cmd, [a](std::ostream& o, std::ostream& e) { return cmd_transfer(*a, o, e); });

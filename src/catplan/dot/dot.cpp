@@ -75,6 +75,9 @@ std::string escape_html(std::string_view s) {
         case '"':
             out += "&quot;";
             break;
+        case '\'':
+            out += "&#39;";
+            break;
         case '\n':
             out += "<BR/>";
             break;
@@ -655,75 +658,6 @@ namespace {
 
 // ---- ontology maps ------------------------------------------------------------------------------
 
-/// Names for the elements of a query's shape: the variable that lands on an element, else the
-/// shape's own label (as migrate::describe_query writes them).
-class ShapeNames {
-public:
-    explicit ShapeNames(const migrate::Query& q) : q_(q) {
-        for (std::size_t i = 0; i < q.nodes().size(); ++i) {
-            migrate::QueryElement el = q.locate_node(i);
-            if (!el.is_value) {
-                parts_.emplace_back(std::pair{el.ob.index(), el.part}, q.nodes()[i].name);
-            } else if (el.value.is_var()) {
-                vars_.emplace_back(std::pair{el.type.index(), el.value.var_index()},
-                                   q.nodes()[i].name);
-            }
-        }
-    }
-
-    std::string part(ObId ob, Part p) const {
-        for (const auto& [key, name] : parts_) {
-            if (key == std::pair{ob.index(), p}) {
-                return name;
-            }
-        }
-        return q_.state().part_label(ob, p);
-    }
-
-    std::string value(AttrTypeId t, const Value& v) const {
-        if (v.is_var()) {
-            for (const auto& [key, name] : vars_) {
-                if (key == std::pair{t.index(), v.var_index()}) {
-                    return name;
-                }
-            }
-        }
-        return q_.state().value_label(t, v);
-    }
-
-private:
-    const migrate::Query& q_;
-    std::vector<std::pair<std::pair<std::uint32_t, Part>, std::string>> parts_;
-    std::vector<std::pair<std::pair<std::uint32_t, std::uint32_t>, std::string>> vars_;
-};
-
-/// The facts of a query's shape in words: `hasColor(block) == "purple"`, `on_l(o) == block`.
-std::vector<std::string> query_facts(const migrate::Query& q, const ShapeNames& names) {
-    const Schema& s = *q.source();
-    const ACSet& shape = q.state();
-    std::vector<std::string> facts;
-    for (std::uint32_t i = 0; i < s.num_obs(); ++i) {
-        ObId ob(i);
-        for (Part p = 0; p < shape.num_parts(ob); ++p) {
-            for (HomId h : s.homs_from(ob)) {
-                Part v = shape.subpart(h, p);
-                if (v != kNoPart) {
-                    facts.push_back(fmt::format("{}({}) == {}", s.hom(h).name, names.part(ob, p),
-                                                names.part(s.hom(h).codom, v)));
-                }
-            }
-            for (AttrId a : s.attrs_from(ob)) {
-                const Value& v = shape.subpart(a, p);
-                if (!v.is_unset()) {
-                    facts.push_back(fmt::format("{}({}) == {}", s.attr(a).name, names.part(ob, p),
-                                                names.value(s.attr(a).codom, v)));
-                }
-            }
-        }
-    }
-    return facts;
-}
-
 std::string html_row(std::string_view text, std::string_view port = {}) {
     std::string attrs = "ALIGN=\"LEFT\"";
     if (!port.empty()) {
@@ -738,7 +672,7 @@ void write_query_box(Writer& w, const migrate::SchemaMap& f, ObId c, const std::
     const migrate::Query& q = f.query(c);
     const Schema& s = *f.source();
     const ACSet& shape = q.state();
-    ShapeNames names(q);
+    migrate::ShapeNames names(q);
     std::string html = fmt::format("<TABLE BORDER=\"1\" CELLBORDER=\"0\" CELLSPACING=\"0\" "
                                    "CELLPADDING=\"3\" STYLE=\"rounded\" BGCOLOR=\"#fffbe6\">"
                                    "<TR><TD><B>{}</B> <FONT COLOR=\"#666666\">query</FONT></TD>"
@@ -773,7 +707,7 @@ void write_query_box(Writer& w, const migrate::SchemaMap& f, ObId c, const std::
     } else if (row == 0) {
         html += html_row("@unit (one element)");
     }
-    auto facts = query_facts(q, names);
+    auto facts = migrate::query_facts(q, names);
     for (std::size_t i = 0; i < facts.size(); ++i) {
         html += (i == 0 ? "<HR/>" : "") + html_row(facts[i]);
     }

@@ -90,7 +90,8 @@ std::string dot_id(std::string_view s);
 /// `s` as the text of a quoted DOT string: '"' and '\' escaped, a newline as "\n".
 std::string escape_quoted(std::string_view s);
 
-/// `s` as text inside an HTML-like DOT label: & < > " escaped as entities, a newline as <BR/>.
+/// `s` as HTML text, in an HTML-like DOT label or an HTML page: & < > " ' escaped as entities, a
+/// newline as <BR/>, carriage returns dropped.
 std::string escape_html(std::string_view s);
 
 } // namespace catplan::dot

@@ -96,11 +96,6 @@ Module load_source(std::string name, std::string text, SourceManager& sources, D
 /// 13 homs, 3 attribute types, 15 attributes)".
 std::string summarize(const Declaration& d);
 
-/// The map in brief, one line per target generator and its image: "  Object => Block",
-/// "  BreadSliced => @join (block::Block; C::Color; C == \"purple\")",
-/// "  breadSlicedIsObject => (Object => block)", "  Temperature => Float".
-std::string describe_map(const migrate::SchemaMap& m);
-
 /// The one-line summary of a rule (as for a rule declaration), e.g. for the rules of a domain.
 std::string summarize_rule(const rewrite::Rule& rule);
 

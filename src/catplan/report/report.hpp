@@ -21,7 +21,6 @@
 #include "catplan/transfer/transfer.hpp"
 
 #include <string>
-#include <string_view>
 
 namespace catplan::report {
 
@@ -48,8 +47,5 @@ struct ReportInput {
 /// The whole report as one HTML document; a picture that Graphviz cannot make is replaced by a
 /// note saying why (the page is still written).
 std::string html_report(const ReportInput& in);
-
-/// `s` as HTML text: & < > " ' escaped as entities.
-std::string escape_html(std::string_view s);
 
 } // namespace catplan::report

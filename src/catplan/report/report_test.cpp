@@ -13,6 +13,7 @@ namespace {
 
 using acset::ACSet;
 using acset::Value;
+using dot::escape_html;
 using migrate::Query;
 using migrate::SchemaMap;
 using migrate::Term;
