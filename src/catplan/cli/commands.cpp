@@ -541,6 +541,7 @@ int run(int argc, char** argv, std::ostream& out, std::ostream& err) {
     add_transfer_commands(app, table);
     add_pddl_commands(app, table);
     add_report_commands(app, table);
+    add_db_commands(app, table);
 
     try {
         app.parse(argc, argv);

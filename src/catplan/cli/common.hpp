@@ -131,5 +131,12 @@ void add_transfer_commands(CLI::App& app, CommandTable& table);
 void add_report_commands(CLI::App& app, CommandTable& table);
 /// Adds `pddl import|export` and PDDL input to `plan` and `validate` (pddl_commands.cpp).
 void add_pddl_commands(CLI::App& app, CommandTable& table);
+/// Adds `db export|import` and `library` (db_commands.cpp).
+void add_db_commands(CLI::App& app, CommandTable& table);
+/// Adds `--db` (migration inside a database) and its options to `migrate`; the function returned
+/// runs it when `--db` was given and returns nullopt otherwise (db_commands.cpp).
+std::function<std::optional<int>(std::ostream&, std::ostream&)>
+add_migrate_db_options(CLI::App& migrate, const std::string& file, const std::string& map,
+                       const std::string& state);
 
 } // namespace catplan::cli

@@ -62,6 +62,10 @@ int cmd_migrate(const MigrateArgs& a, std::ostream& out, std::ostream& err) {
     if (!m) {
         return kBadInput;
     }
+    if (a.state.empty()) {
+        error(err, "migrate needs STATE, or --db URL to migrate the state stored in a database");
+        return kBadInput;
+    }
     const auto* f = find_map(*m, a.file, a.map, err);
     const auto* x = find_declaration(*m, a.file, a.state, lang::DeclKind::Instance, err);
     if (f == nullptr || x == nullptr) {
@@ -144,8 +148,8 @@ void add_migrate_commands(CLI::App& app, CommandTable& table) {
         "migrate", "Carry a state along an ontology map (Δ_F) and print it as tables");
     migrate_cmd->add_option("FILE", migrate_args->file, "language file (.cp)")->required();
     migrate_cmd->add_option("--map", migrate_args->map, "a map declared in FILE")->required();
-    migrate_cmd->add_option("STATE", migrate_args->state, "an instance on the map's source schema")
-        ->required();
+    migrate_cmd->add_option("STATE", migrate_args->state,
+                            "an instance on the map's source schema (not with --db)");
     migrate_cmd->add_option("-o,--output", migrate_args->output,
                             "write to this file instead of stdout");
     migrate_cmd
@@ -157,7 +161,12 @@ void add_migrate_commands(CLI::App& app, CommandTable& table) {
         "--sigma", migrate_args->sigma,
         "push STATE, on the map's target schema, to its source instead (Σ_F, "
         "the left adjoint of Δ_F; delta maps only; exit 3 when it cannot be done)");
-    table.add(migrate_cmd, [migrate_args](std::ostream& o, std::ostream& e) {
+    auto in_database = add_migrate_db_options(*migrate_cmd, migrate_args->file, migrate_args->map,
+                                              migrate_args->state);
+    table.add(migrate_cmd, [migrate_args, in_database](std::ostream& o, std::ostream& e) {
+        if (auto rc = in_database(o, e)) {
+            return *rc;
+        }
         return cmd_migrate(*migrate_args, o, e);
     });
 

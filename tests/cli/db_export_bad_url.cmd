@@ -1,0 +1,1 @@
+db export examples/colorblocksworld/colorblocksworld.cp Initial --db mysql://localhost/x

@@ -1,0 +1,1 @@
+migrate examples/colorblocks_to_kitchen/appendix_map.cp --map ColorToKitchen --print-sql
