@@ -131,6 +131,24 @@ TEST_P(MigrateSqlTest, ADanglingForeignKeyStopsTheMigrationAndWritesNothing) {
     EXPECT_TRUE(tables->empty());
 }
 
+TEST(MigrateSql, SqliteCellsOfTheWrongTypeStopTheMigration) {
+    FreshDatabase db(Engine::SQLite);
+    SourceManager sources;
+    lang::Module m = testing::load_example("tests/db/maps.cp", sources);
+    const SchemaMap& f = find_map(m, "Reverse");
+    ACSet x(f.source());
+    x.add_parts(ObId(0), 2);
+    x.add_parts(ObId(1), 1);
+    ASSERT_TRUE(export_state(db.url(), x, "G"));
+    auto c = connect(db.url());
+    ASSERT_TRUE(c);
+    ASSERT_TRUE((*c)->exec("UPDATE \"G.E\" SET \"src\" = 'one', \"weight\" = 'heavy'"));
+    auto st = migrate_in_database(db.url(), f, "G", "H");
+    ASSERT_FALSE(st);
+    EXPECT_EQ(st.error(), "table \"G.E\", row 1, column \"src\": 'one' is not an id\n"
+                          "table \"G.E\", row 1, column \"weight\": 'heavy' is not a Float");
+}
+
 TEST(MigrateSql, ThePrintedSqlReadsAsSql) {
     SourceManager sources;
     lang::Module m = testing::load_example("tests/db/maps.cp", sources);

@@ -569,12 +569,56 @@ void dangling_keys(Connection& c, const Layout& l, Errors& errors) {
     }
 }
 
+// SQLite stores whatever a cell is given: every cell whose type is not its column's, in SQL (a
+// few rows per column). PostgreSQL's column types already refuse them.
+void wrong_types(Connection& c, const Layout& l, Errors& errors) {
+    if (c.engine() != Engine::SQLite) {
+        return;
+    }
+    const Schema& s = l.schema();
+    auto check = [&](ObId from, const std::string& column, const std::string& allowed,
+                     const std::string& word, bool boolean = false) {
+        std::string sql =
+            "SELECT " + quote(kIdColumn) + ", quote(" + quote(column) + ") FROM " + l.table(from) +
+            " WHERE typeof(" + quote(column) + ") NOT IN ('null', " + allowed + ")" +
+            (boolean ? " OR " + quote(column) + " NOT IN (0, 1)" : "") + " ORDER BY 1 LIMIT 5";
+        auto st = c.query(sql, [&](const Row& r) {
+            errors.add(fmt::format("table {}, row {}, column {}: {} is not {}", l.table(from),
+                                   r.display(0), quote(column), r.text(1).value_or("?"), word));
+            return true;
+        });
+        if (!st) {
+            errors.add(st.error());
+        }
+    };
+    for (std::uint32_t h = 0; h < s.num_homs(); ++h) {
+        check(s.hom(HomId(h)).dom, s.hom(HomId(h)).name, "'integer'", "an id");
+    }
+    for (std::uint32_t a = 0; a < s.num_attrs(); ++a) {
+        const auto& info = s.attr(AttrId(a));
+        check(info.dom, Layout::var_column(info), "'integer'", "an id");
+        schema::ValueKind kind = s.attr_type(info.codom).kind;
+        std::string allowed = kind == schema::ValueKind::String    ? "'text'"
+                              : kind == schema::ValueKind::Float   ? "'real', 'integer'"
+                              : kind == schema::ValueKind::Unknown ? "'none'"
+                                                                   : "'integer'";
+        check(info.dom, info.name, allowed, kind_word(kind), kind == schema::ValueKind::Bool);
+    }
+}
+
 } // namespace
 
 std::vector<std::string> verify_tables(Connection& c, const Layout& l) {
     Errors errors;
-    if (check_tables(c, l, errors)) {
+    // Each check needs the one before it to pass (a text is no key, a dangling key no path).
+    if (!check_tables(c, l, errors)) {
+        return errors.done();
+    }
+    wrong_types(c, l, errors);
+    if (errors.list.empty()) {
         dangling_keys(c, l, errors);
+    }
+    if (errors.list.empty()) {
         auto violations = equation_violations(c, l);
         if (!violations) {
             errors.add(violations.error());
