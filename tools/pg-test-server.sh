@@ -25,8 +25,15 @@ as_owner() {
     fi
 }
 
+stop_server() {
+    if [ -f "$dir/data/postmaster.pid" ] && [ -n "$bindir" ]; then
+        as_owner "$bindir/pg_ctl" -D "$dir/data" -m fast -w stop >/dev/null 2>&1
+    fi
+}
+
 case "$cmd" in
 start)
+    stop_server # one left running by a run that was killed
     rm -rf "$dir"
     mkdir -p "$dir"
     if [ -z "$bindir" ]; then
@@ -60,9 +67,7 @@ start)
     echo "$("$bindir/postgres" --version) started: $(cat "$dir/url")"
     ;;
 stop)
-    if [ -f "$dir/data/postmaster.pid" ] && [ -n "$bindir" ]; then
-        as_owner "$bindir/pg_ctl" -D "$dir/data" -m fast -w stop >/dev/null 2>&1
-    fi
+    stop_server
     rm -rf "$dir"
     ;;
 *)
