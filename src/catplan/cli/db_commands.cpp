@@ -306,13 +306,22 @@ add_migrate_db_options(CLI::App& migrate, const std::string& file, const std::st
                      "with --db: replace the tables of the namespace --to");
     migrate.add_flag("--print-sql", a->print_sql,
                      "with --db: print the SQL of the migration for that engine, run nothing");
-    return [a, &file, &map, &state](std::ostream& out, std::ostream& err) -> std::optional<int> {
+    return [a, &migrate, &file, &map, &state](std::ostream& out,
+                                              std::ostream& err) -> std::optional<int> {
         if (a->db.empty()) {
             if (a->print_sql || a->replace || !a->from.empty() || !a->to.empty()) {
                 error(err, "--print-sql, --replace, --from and --to go with --db URL");
                 return kBadInput;
             }
             return std::nullopt;
+        }
+        for (const char* name : {"--sigma", "--output", "--format"}) {
+            if (migrate.get_option(name)->count() > 0) {
+                error(err, fmt::format("{} does not go with --db (the result is the tables "
+                                       "written in the database)",
+                                       name));
+                return kBadInput;
+            }
         }
         return cmd_migrate_db(*a, file, map, state, out, err);
     };
