@@ -91,18 +91,19 @@ StoredTransfer run(const Worker& w, const Job& j, const std::string& map) {
         return failed_job(j, map, "the stored plan: " + sink.render());
     }
     transfer::TransferResult r = transfer::transfer_plan(f, p, *plan);
-    StoredTransfer t = failed_job(j, map, r.reason);
+    const transfer::Verdict& v = r.verdict;
+    StoredTransfer t = failed_job(j, map, v.reason());
     t.migration = std::string(transfer::to_string(r.migration));
-    t.source_valid = r.source_valid;
-    t.valid = r.valid;
-    t.goal_satisfied = r.goal.satisfied;
-    t.goal_total = r.goal.total;
-    t.unsatisfied = r.goal.unsatisfied;
+    t.source_valid = v.source_valid();
+    t.valid = v.valid();
+    t.goal_satisfied = v.goal.satisfied;
+    t.goal_total = v.goal.total;
+    t.unsatisfied = v.goal.unsatisfied;
     for (const auto& s : r.steps) {
         t.target_plan.push_back(s.target.to_string());
     }
-    if (r.failed_step) {
-        t.failed_step = r.failed_step->index + 1;
+    if (const auto* f = v.failed_step(); f != nullptr && f->step) {
+        t.failed_step = *f->step + 1;
     }
     t.ms = r.timings.total_ms;
     return t;
