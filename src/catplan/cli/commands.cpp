@@ -2,8 +2,10 @@
 
 #include "catplan/acset/printer.hpp"
 #include "catplan/base/diagnostic.hpp"
+#include "catplan/base/out_of_memory.hpp"
 #include "catplan/base/output_file.hpp"
 #include "catplan/cli/common.hpp"
+#include "catplan/cli/options.hpp"
 #include "catplan/dot/dot.hpp"
 #include "catplan/hom/hom_search.hpp"
 #include "catplan/hom/morphism.hpp"
@@ -355,14 +357,23 @@ int cmd_plan(const PlanArgs& a, std::ostream& out, std::ostream& err) {
     options.max_nodes = a.max_nodes;
     options.max_seconds = a.max_time;
     options.max_bytes = static_cast<std::size_t>(a.max_memory_mb * 1e6);
-    if (!a.no_timing) {
-        options.progress = [&err](const plan::SearchStats& st) {
+    // The last progress report is what an out-of-memory error can tell of the search.
+    auto last = std::make_shared<plan::SearchStats>();
+    options.progress = [&err, last, timing = !a.no_timing](const plan::SearchStats& st) {
+        *last = st;
+        if (timing) {
             err << fmt::format("catplan: searching: expanded {}, generated {}, frontier {}, f {}, "
                                "{:.1f} MB, {:.1f} s\n",
                                st.expanded, st.generated, st.frontier, st.f,
                                static_cast<double>(st.bytes) / 1e6, st.seconds);
-        };
-    }
+        }
+    };
+    OutOfMemoryNote note([last] {
+        return last->seconds > 0
+                   ? fmt::format("the search had, at its last progress report, {}",
+                                 format_stats(*last, true))
+                   : std::string("the search ran out of memory before its first progress report");
+    });
     std::string config = options.search == plan::SearchKind::BreadthFirst
                              ? a.search
                              : fmt::format("{}, {}", a.search, a.heuristic);
@@ -437,7 +448,8 @@ int run(int argc, char** argv, std::ostream& out, std::ostream& err) {
     auto* count_flag = homs->add_flag("--count", homs_args.count, "print how many there are");
     homs->add_flag("--all", homs_args.all, "print all of them (default: the first)")
         ->excludes(count_flag);
-    homs->add_option("--max", homs_args.max, "with --all, stop after this many");
+    homs->add_option("--max", homs_args.max, "with --all, stop after this many")
+        ->check(positive_count());
 
     auto* json_cmd = app.add_subcommand("json", "Catlab ACSet JSON interop");
     json_cmd->require_subcommand(1);
@@ -509,13 +521,13 @@ int run(int argc, char** argv, std::ostream& out, std::ostream& err) {
         ->check(CLI::IsMember({"blind", "goalcount", "hadd", "hff"}))
         ->capture_default_str();
     plan_cmd->add_option("--max-nodes", plan_args.max_nodes, "stop after expanding N states")
-        ->check(CLI::NonNegativeNumber);
+        ->check(positive_count());
     plan_cmd->add_option("--max-time", plan_args.max_time, "stop after S seconds")
-        ->check(CLI::NonNegativeNumber);
+        ->check(positive_number("seconds"));
     plan_cmd
         ->add_option("--max-memory", plan_args.max_memory_mb,
                      "stop when the stored states take about MB megabytes")
-        ->check(CLI::NonNegativeNumber);
+        ->check(positive_number("megabytes"));
     plan_cmd->add_option("-o,--output", plan_args.output, "write the plan to this file");
     plan_cmd->add_flag(
         "--no-timing", plan_args.no_timing,
@@ -552,7 +564,8 @@ int run(int argc, char** argv, std::ostream& out, std::ostream& err) {
     } catch (const CLI::CallForVersion& e) {
         return app.exit(e, out, err);
     } catch (const CLI::ParseError& e) {
-        app.exit(e, out, err);
+        std::vector<std::string> args(argv + std::min(argc, 1), argv + argc);
+        usage_error(err, command_for(app, args), subcommand_error(app, args).value_or(e.what()));
         return kBadInput;
     }
 

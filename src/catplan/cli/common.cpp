@@ -2,6 +2,7 @@
 
 #include "catplan/base/output_file.hpp"
 #include "catplan/cli/commands.hpp"
+#include "catplan/cli/options.hpp"
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
@@ -28,18 +29,32 @@ void error(std::ostream& err, const std::string& message) {
     err << "catplan: error: " << message << "\n";
 }
 
-// Prints to stdout, or writes the whole text to a file (through a temporary file and a rename).
-int emit(const std::string& text, const std::string& output, std::ostream& out, std::ostream& err) {
-    if (output.empty() || output == "-") {
-        out << text;
-        return kOk;
-    }
+// The files are staged (each written in full beside its target) before anything is printed or put
+// in place, so that a command that cannot write one of its outputs writes none.
+int emit(const std::vector<OutputText>& outputs, std::ostream& out, std::ostream& err) {
+    OutputSet files;
     std::string why;
-    if (!write_file_atomically(output, text, why)) {
+    for (const auto& o : outputs) {
+        if (!o.path.empty() && o.path != "-" && !files.stage(o.path, o.text, why)) {
+            error(err, why);
+            return kBadInput;
+        }
+    }
+    out.flush(); // what stdout had comes before a target written in place, such as /dev/stdout
+    if (!files.commit(why)) {
         error(err, why);
         return kBadInput;
     }
+    for (const auto& o : outputs) {
+        if (o.path.empty() || o.path == "-") {
+            out << o.text;
+        }
+    }
     return kOk;
+}
+
+int emit(const std::string& text, const std::string& output, std::ostream& out, std::ostream& err) {
+    return emit(std::vector<OutputText>{{text, output}}, out, err);
 }
 
 std::string declared_names(const lang::Module& m) {
@@ -171,7 +186,7 @@ void add_replan_options(CLI::App* cmd, TransferArgs& a, const std::string& repla
         ->check(CLI::IsMember({"blind", "goalcount", "hadd", "hff"}))
         ->capture_default_str();
     cmd->add_option("--max-time", a.max_time, "with --replan: stop the search after S seconds")
-        ->check(CLI::NonNegativeNumber)
+        ->check(positive_number("seconds"))
         ->capture_default_str();
 }
 

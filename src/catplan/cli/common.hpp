@@ -41,7 +41,19 @@ std::optional<lang::Module> load(Session& s, const std::string& file, std::ostre
 /// Prints `catplan: error: message`.
 void error(std::ostream& err, const std::string& message);
 
-/// Prints to stdout, or writes the whole text to a file (through a temporary file and a rename).
+/// One text of a command's output and where it goes: the file `path`, or stdout when `path` is ""
+/// or "-".
+struct OutputText {
+    std::string text;
+    std::string path;
+};
+
+/// Writes every text where it goes, the files all or none (base/output_file.hpp: a new file gets
+/// the usual mode, a replaced one keeps its mode, a device or FIFO is written in place); kOk, or
+/// kBadInput with the error printed and nothing written or printed.
+int emit(const std::vector<OutputText>& outputs, std::ostream& out, std::ostream& err);
+
+/// emit of one text: to stdout, or to the file `output`.
 int emit(const std::string& text, const std::string& output, std::ostream& out, std::ostream& err);
 
 /// The names a module declares, comma-separated ("none" when it declares nothing).

@@ -189,11 +189,8 @@ int cmd_pddl_export(const ExportArgs& a, std::ostream& out, std::ostream& err) {
         ptext = *p;
     }
     if (!a.problem_output.empty()) {
-        int rc = emit(ptext, a.problem_output, out, err);
-        if (rc != kOk) {
-            return rc;
-        }
-        ptext.clear();
+        // Both files or neither (emit stages them together).
+        return emit({{*dtext, a.output}, {ptext, a.problem_output}}, out, err);
     }
     return emit(ptext.empty() ? *dtext : *dtext + "\n" + ptext, a.output, out, err);
 }

@@ -2,6 +2,7 @@
 
 #include "catplan/cli/commands.hpp"
 #include "catplan/cli/common.hpp"
+#include "catplan/cli/options.hpp"
 #include "catplan/report/report.hpp"
 #include "catplan/transfer/transfer.hpp"
 

@@ -4,6 +4,7 @@
 #include "catplan/acset/printer.hpp"
 #include "catplan/cli/commands.hpp"
 #include "catplan/cli/common.hpp"
+#include "catplan/cli/options.hpp"
 #include "catplan/lang/module.hpp"
 #include "catplan/migrate/describe.hpp"
 #include "catplan/transfer/transfer.hpp"

@@ -1,0 +1,1 @@
+json export tests/cli/data/graphs.cp Cycle3 -o /dev/stdout

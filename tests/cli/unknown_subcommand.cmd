@@ -1,0 +1,1 @@
+chek examples/colorblocksworld/colorblocksworld.cp
