@@ -31,10 +31,10 @@ bench: deps
 	./tools/run-benchmarks.sh build/release
 
 format:
-	find src tests bench -name '*.[ch]pp' | xargs clang-format -i
+	find src tests bench fuzz -name '*.[ch]pp' | xargs clang-format -i
 
 check-format:
-	find src tests bench -name '*.[ch]pp' | xargs clang-format --dry-run --Werror
+	find src tests bench fuzz -name '*.[ch]pp' | xargs clang-format --dry-run --Werror
 
 check-layers:
 	python3 tools/check_layers.py

@@ -1,6 +1,8 @@
 #!/bin/sh
 # Installs the Debian packages catplan needs to build, test and run its demo, if any is missing.
 # Runs apt-get as root, or through sudo for a user who is not root.
+#   tools/install-deps.sh         what `make test`, `make demo` and `make bench` need
+#   tools/install-deps.sh fuzz    that and clang with libFuzzer, for the fuzz preset (docs/fuzzing.md)
 set -eu
 
 PACKAGES="g++ cmake ninja-build make python3 pkg-config clang-format
@@ -8,6 +10,10 @@ libgtest-dev libgmock-dev libbenchmark-dev libcli11-dev nlohmann-json3-dev libfm
 libsqlite3-dev graphviz libgraphviz-dev chromium"
 # The database layer: PostgreSQL's client library, and its server for the tests.
 PACKAGES="$PACKAGES libpq-dev postgresql"
+if [ "${1:-}" = "fuzz" ]; then
+    # clang, and compiler-rt's libFuzzer and sanitizer runtimes (libclang_rt.fuzzer).
+    PACKAGES="$PACKAGES clang libclang-rt-dev"
+fi
 
 missing=""
 for p in $PACKAGES; do
