@@ -102,8 +102,8 @@ StoredTransfer run(const Worker& w, const Job& j, const std::string& map) {
     for (const auto& s : r.steps) {
         t.target_plan.push_back(s.target.to_string());
     }
-    if (const auto* f = v.failed_step(); f != nullptr && f->step) {
-        t.failed_step = *f->step + 1;
+    if (const auto* failed = v.failed_step(); failed != nullptr && failed->step) {
+        t.failed_step = *failed->step + 1;
     }
     t.ms = r.timings.total_ms;
     return t;
