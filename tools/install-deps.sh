@@ -7,7 +7,7 @@ set -eu
 
 PACKAGES="g++ cmake ninja-build make python3 pkg-config clang-format
 libgtest-dev libgmock-dev libbenchmark-dev libcli11-dev nlohmann-json3-dev libfmt-dev
-libsqlite3-dev graphviz libgraphviz-dev chromium"
+libsqlite3-dev libicu-dev graphviz libgraphviz-dev chromium"
 # The database layer: PostgreSQL's client library, and its server for the tests.
 PACKAGES="$PACKAGES libpq-dev postgresql"
 if [ "${1:-}" = "fuzz" ]; then

@@ -232,12 +232,11 @@ int cmd_json_import(const std::vector<std::string>& args, std::string name,
     Session s;
     const std::string& json_file = args.back();
     if (name.empty()) {
-        name = file_stem(json_file);
+        name = json_file == "-" ? "stdin" : file_stem(json_file);
     }
     if (args.size() == 1) {
-        auto f = s.sources.add_file(json_file);
+        auto f = read_input(s, json_file, err);
         if (!f) {
-            error(err, fmt::format("cannot read '{}'", json_file));
             return kBadInput;
         }
         auto sch = json::read_schema(name, *f, s.sources, s.sink);
@@ -258,9 +257,8 @@ int cmd_json_import(const std::vector<std::string>& args, std::string name,
     if (d == nullptr) {
         return kBadInput;
     }
-    auto f = s.sources.add_file(json_file);
+    auto f = read_input(s, json_file, err);
     if (!f) {
-        error(err, fmt::format("cannot read '{}'", json_file));
         return kBadInput;
     }
     auto x = json::read_acset(d->schema, *f, s.sources, s.sink);
@@ -291,13 +289,8 @@ int cmd_validate(const ValidateArgs& a, std::ostream& out, std::ostream& err) {
     if (problem == nullptr) {
         return kBadInput;
     }
-    auto f = s.sources.add_file(a.plan_file);
-    if (!f) {
-        error(err, fmt::format("cannot read '{}'", a.plan_file));
-        return kBadInput;
-    }
-    auto plan = plan::parse_plan(*f, s.sources, s.sink);
-    if (report(s, err) || !plan) {
+    auto plan = load_plan(s, a.plan_file, *problem, err);
+    if (!plan) {
         return kBadInput;
     }
     plan::ValidateOptions options;

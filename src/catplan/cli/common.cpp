@@ -25,6 +25,31 @@ std::optional<lang::Module> load(Session& s, const std::string& file, std::ostre
     return m;
 }
 
+std::optional<std::uint32_t> read_input(Session& s, const std::string& path, std::ostream& err) {
+    auto file = s.sources.add_file(path);
+    if (!file) {
+        error(err, fmt::format("cannot read '{}': {}", path, file.error()));
+        return std::nullopt;
+    }
+    return *file;
+}
+
+std::optional<plan::Plan> load_plan(Session& s, const std::string& path,
+                                    const plan::Problem& problem, std::ostream& err) {
+    auto file = read_input(s, path, err);
+    if (!file) {
+        return std::nullopt;
+    }
+    auto plan = plan::parse_plan(*file, s.sources, s.sink);
+    if (plan) {
+        plan::check_plan(*plan, *problem.domain, *problem.initial, s.sink);
+    }
+    if (report(s, err) || !plan) {
+        return std::nullopt;
+    }
+    return plan;
+}
+
 void error(std::ostream& err, const std::string& message) {
     err << "catplan: error: " << message << "\n";
 }
@@ -226,13 +251,8 @@ std::optional<TransferInputs> load_transfer_inputs(Session& s, const TransferArg
             return std::nullopt;
         }
     }
-    auto f = s.sources.add_file(a.plan_file);
-    if (!f) {
-        error(err, fmt::format("cannot read '{}'", a.plan_file));
-        return std::nullopt;
-    }
-    auto plan = plan::parse_plan(*f, s.sources, s.sink);
-    if (report(s, err) || !plan) {
+    auto plan = load_plan(s, a.plan_file, *in.problem, err);
+    if (!plan) {
         return std::nullopt;
     }
     in.plan = std::move(*plan);

@@ -38,6 +38,15 @@ bool report(const Session& s, std::ostream& err);
 /// Loads a file and its imports; nullopt (with every diagnostic printed) when it has errors.
 std::optional<lang::Module> load(Session& s, const std::string& file, std::ostream& err);
 
+/// Reads a file named on the command line ("-": standard input) into the session; nullopt with
+/// `cannot read 'PATH': REASON` printed.
+std::optional<std::uint32_t> read_input(Session& s, const std::string& path, std::ostream& err);
+
+/// Reads a plan file ("-": standard input), parses it and checks it against the problem's domain
+/// and initial state (plan::check_plan); nullopt with every diagnostic printed (bad input).
+std::optional<plan::Plan> load_plan(Session& s, const std::string& path,
+                                    const plan::Problem& problem, std::ostream& err);
+
 /// Prints `catplan: error: message`.
 void error(std::ostream& err, const std::string& message);
 

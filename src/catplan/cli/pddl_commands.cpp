@@ -30,14 +30,7 @@ namespace {
 /// every diagnostic printed.
 std::optional<pddl::Import> load_pddl(Session& s, const std::string& domain_file,
                                       const std::string& problem_file, std::ostream& err) {
-    auto read = [&](const std::string& f) -> std::optional<std::uint32_t> {
-        auto id = s.sources.add_file(f);
-        if (!id) {
-            error(err, fmt::format("cannot read '{}'", f));
-        }
-        return id;
-    };
-    auto df = read(domain_file);
+    auto df = read_input(s, domain_file, err);
     if (!df) {
         return std::nullopt;
     }
@@ -47,7 +40,7 @@ std::optional<pddl::Import> load_pddl(Session& s, const std::string& domain_file
     }
     std::optional<pddl::Problem> problem;
     if (!problem_file.empty()) {
-        auto pf = read(problem_file);
+        auto pf = read_input(s, problem_file, err);
         if (!pf) {
             return std::nullopt;
         }
@@ -222,12 +215,14 @@ int pddl_validate(const std::vector<std::string>& files, std::ostream& out, std:
     if (!im) {
         return kBadInput;
     }
-    auto f = s.sources.add_file(files[2]);
+    auto f = read_input(s, files[2], err);
     if (!f) {
-        error(err, fmt::format("cannot read '{}'", files[2]));
         return kBadInput;
     }
     auto plan = pddl::parse_ipc_plan(*f, s.sources, s.sink);
+    if (plan) {
+        pddl::check_ipc_plan(*im, *plan, s.sink);
+    }
     if (report(s, err) || !plan) {
         return kBadInput;
     }

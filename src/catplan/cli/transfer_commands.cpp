@@ -5,6 +5,7 @@
 #include "catplan/cli/commands.hpp"
 #include "catplan/cli/common.hpp"
 #include "catplan/cli/options.hpp"
+#include "catplan/json/json.hpp"
 #include "catplan/lang/module.hpp"
 #include "catplan/migrate/describe.hpp"
 #include "catplan/transfer/transfer.hpp"
@@ -219,7 +220,7 @@ int cmd_transfer(const TransferCommandArgs& a, std::ostream& out, std::ostream& 
         r.replan = transfer::replan(r.t, replan_options(a.in));
     }
     std::string text =
-        a.format == "json" ? json_report(a, *in, r).dump(2) + "\n" : text_report(a, *in, r);
+        a.format == "json" ? json::dump(json_report(a, *in, r), 2) + "\n" : text_report(a, *in, r);
     int rc = emit(text, a.output, out, err);
     if (rc != kOk) {
         return rc;

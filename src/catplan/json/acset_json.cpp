@@ -45,6 +45,14 @@ OrderedJson value_to_json(const Value& v) {
 
 } // namespace
 
+std::string dump(const nlohmann::json& doc, int indent) {
+    return doc.dump(indent, ' ', false, nlohmann::json::error_handler_t::replace);
+}
+
+std::string dump(const nlohmann::ordered_json& doc, int indent) {
+    return doc.dump(indent, ' ', false, nlohmann::ordered_json::error_handler_t::replace);
+}
+
 std::string write_acset(const ACSet& x, bool pretty) {
     const auto& s = x.schema();
     OrderedJson out = OrderedJson::object();
@@ -74,8 +82,7 @@ std::string write_acset(const ACSet& x, bool pretty) {
         }
         out[s.attr_type(t).name] = std::move(rows);
     }
-    // Replace invalid UTF-8 instead of throwing: a string attribute may hold arbitrary bytes.
-    return out.dump(pretty ? 2 : -1, ' ', false, OrderedJson::error_handler_t::replace);
+    return dump(out, pretty ? 2 : -1);
 }
 
 namespace {

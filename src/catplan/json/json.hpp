@@ -14,7 +14,9 @@
 // from its values (see read_acset).
 //
 // Readers report every problem as a located Diagnostic (the text must be registered in the
-// SourceManager); writers cannot fail.
+// SourceManager): syntax, nesting deeper than kMaxNesting (256) arrays and objects, numbers out of
+// range, duplicate keys, and what does not fit the schema. Writers cannot fail: every JSON text
+// catplan writes goes through `dump`, which turns invalid UTF-8 into U+FFFD instead of throwing.
 //
 //   SourceManager sources;
 //   DiagnosticSink sink(sources);
@@ -27,11 +29,18 @@
 #include "catplan/schema/schema.hpp"
 
 #include <cstdint>
+#include <nlohmann/json_fwd.hpp>
 #include <optional>
 #include <string>
 #include <string_view>
 
 namespace catplan::json {
+
+/// The text of a JSON document, indented by `indent` spaces (compact when negative); never throws:
+/// a string holding invalid UTF-8 is written with U+FFFD in place of the bad bytes.
+std::string dump(const nlohmann::json& doc, int indent = -1);
+/// The same for a document that keeps its keys in insertion order.
+std::string dump(const nlohmann::ordered_json& doc, int indent = -1);
 
 /// Catlab ACSet JSON of a state (compact unless pretty); floats in shortest round-trip form,
 /// non-finite floats as null; part and variable names are not part of the format.

@@ -738,5 +738,50 @@ TEST(JsonErrors, MutatedDocumentsGiveLocatedDiagnosticsOnly) {
     }
 }
 
+TEST(JsonErrors, DeepNestingIsLocatedNotACrash) {
+    Graph g;
+    // 300,000 levels overflowed the stack in the parsed tree's destructor.
+    std::string deep = std::string(300000, '[') + std::string(300000, ']');
+    auto errors = acset_errors(g.s, deep);
+    EXPECT_EQ(errors.substr(0, 51), "x.json:1:257: error: nested deeper than 256 levels\n");
+    // Within the limit the document parses (and is then refused as no ACSet).
+    std::string ok = std::string(255, '[') + std::string(255, ']');
+    EXPECT_NE(acset_errors(g.s, ok).find("x.json:1:1: error: expected a JSON object"),
+              std::string::npos);
+    std::string objects;
+    for (int i = 0; i < 300; ++i) {
+        objects += "{\"a\":";
+    }
+    EXPECT_NE(
+        schema_errors(objects + "1" + std::string(300, '}')).find("nested deeper than 256 levels"),
+        std::string::npos);
+}
+
+TEST(JsonErrors, LineEndsAreLfCrlfOrCr) {
+    Graph g;
+    EXPECT_EQ(acset_errors(g.s, "{\"V\": [],\r\"E\": [],\r\n\"X\": []}").substr(0, 52),
+              "x.json:3:1: error: unknown object or attribute type ");
+}
+
+TEST(JsonOutput, InvalidUtf8IsReplacedNotThrown) {
+    nlohmann::json j = {{"step", "pick\xFF(a)"}};
+    EXPECT_EQ(dump(j), "{\"step\":\"pick\xEF\xBF\xBD(a)\"}");
+    nlohmann::ordered_json o = {{"z", "\xC0"}, {"a", 1}};
+    EXPECT_EQ(dump(o, 1), "{\n \"z\": \"\xEF\xBF\xBD\",\n \"a\": 1\n}");
+    LabeledDDS d;
+    ACSet x(d.s);
+    Part p = x.add_part(d.x);
+    x.set_subpart(d.phi, p, p);
+    x.set_subpart(d.label, p,
+                  Value::string("a\xFF"
+                                "b"));
+    auto text = write_acset(x);
+    EXPECT_NE(text.find("a\xEF\xBF\xBD"
+                        "b"),
+              std::string::npos)
+        << text;
+    EXPECT_TRUE(read(d.s, text).has_value());
+}
+
 } // namespace
 } // namespace catplan::json

@@ -76,7 +76,7 @@ std::string write_schema(const Schema& s, bool pretty) {
     out["AttrType"] = std::move(attr_types);
     out["Attr"] = std::move(attrs);
     out["equations"] = std::move(eqs);
-    return out.dump(pretty ? 2 : -1, ' ', false, OrderedJson::error_handler_t::replace);
+    return dump(out, pretty ? 2 : -1);
 }
 
 namespace {

@@ -1,5 +1,8 @@
 #include "catplan/lang/syntax.hpp"
 
+#include "catplan/base/unicode.hpp"
+
+#include <array>
 #include <cctype>
 #include <cerrno>
 #include <cmath>
@@ -8,14 +11,6 @@
 
 namespace catplan::lang {
 namespace {
-
-bool is_ident_start(unsigned char c) {
-    return std::isalpha(c) || c == '_' || c >= 0x80;
-}
-
-bool is_ident_char(unsigned char c) {
-    return is_ident_start(c) || std::isdigit(c);
-}
 
 // The multi-byte operators that must not be taken for identifier characters.
 struct Utf8Op {
@@ -34,14 +29,48 @@ const Utf8Op* utf8_op_at(std::string_view text, std::size_t i) {
     return nullptr;
 }
 
+// The byte length of the identifier character at text[i] (a start character when `start`), or 0.
+// ASCII is decided here; other code points by their Unicode identifier properties (unicode.hpp),
+// except the operators `⋅ · → ∘` (`·` is XID_Continue).
+std::size_t ident_char_at(std::string_view text, std::size_t i, bool start) {
+    auto c = static_cast<unsigned char>(text[i]);
+    if (c < 0x80) {
+        return std::isalpha(c) || c == '_' || (!start && std::isdigit(c)) ? 1 : 0;
+    }
+    if (utf8_op_at(text, i) != nullptr) {
+        return 0;
+    }
+    CodePoint cp = decode_utf8(text, i);
+    bool ok =
+        cp.valid && (start ? is_identifier_start(cp.value) : is_identifier_continue(cp.value));
+    return ok ? cp.length : 0;
+}
+
+// The end of the identifier that starts at text[i] (i itself when none starts there).
+std::size_t ident_end(std::string_view text, std::size_t i) {
+    std::size_t n = i < text.size() ? ident_char_at(text, i, true) : 0;
+    if (n == 0) {
+        return i;
+    }
+    i += n;
+    while (i < text.size() && (n = ident_char_at(text, i, false)) > 0) {
+        i += n;
+    }
+    return i;
+}
+
 class Lexer {
 public:
     Lexer(const SourceManager& sources, std::uint32_t file, DiagnosticSink& sink)
-        : file_(file), text_(sources.text(file)), sink_(sink) {}
+        : sources_(sources), file_(file), text_(sources.text(file)), sink_(sink) {}
 
     std::vector<Token> run() {
-        while (i_ < text_.size()) {
-            step();
+        // An encoding error makes every later message doubtful: report those alone.
+        if (check_utf8(sources_, file_, sink_)) {
+            i_ = bom_length(text_);
+            while (i_ < text_.size()) {
+                step();
+            }
         }
         push(TokenKind::Newline, i_, i_, "");
         push(TokenKind::Eof, i_, i_, "");
@@ -61,12 +90,13 @@ private:
     void step() {
         auto c = static_cast<unsigned char>(text_[i_]);
         std::size_t b = i_;
-        if (c == '\n') {
-            push(TokenKind::Newline, b, b + 1, "");
-            ++i_;
+        if (c == '\n' || c == '\r') {
+            // LF, CRLF and a lone CR each end a line.
+            i_ += text_.substr(i_, 2) == "\r\n" ? 2 : 1;
+            push(TokenKind::Newline, b, i_, "");
             return;
         }
-        if (c == ' ' || c == '\t' || c == '\r') {
+        if (c == ' ' || c == '\t') {
             ++i_;
             return;
         }
@@ -79,11 +109,8 @@ private:
             push(TokenKind::Punct, b, i_, std::string(op->punct));
             return;
         }
-        if (is_ident_start(c)) {
-            while (i_ < text_.size() && is_ident_char(static_cast<unsigned char>(text_[i_])) &&
-                   !utf8_op_at(text_, i_)) {
-                ++i_;
-            }
+        if (std::size_t e = ident_end(text_, i_); e > i_) {
+            i_ = e;
             push(TokenKind::Ident, b, i_, std::string(text_.substr(b, i_ - b)));
             return;
         }
@@ -116,12 +143,13 @@ private:
             return;
         }
         // One code point, so the caret covers the whole character.
-        ++i_;
-        while (i_ < text_.size() && (static_cast<unsigned char>(text_[i_]) & 0xC0) == 0x80) {
-            ++i_;
-        }
+        CodePoint cp = decode_utf8(text_, i_);
+        i_ += cp.length;
         sink_.error(range(b, i_),
-                    fmt::format("unexpected character '{}'", text_.substr(b, i_ - b)));
+                    c < 0x80 ? fmt::format("unexpected character '{}'", text_.substr(b, i_ - b))
+                             : fmt::format("unexpected character '{}' (U+{:04X})",
+                                           text_.substr(b, i_ - b),
+                                           static_cast<std::uint32_t>(cp.value)));
     }
 
     void comment() {
@@ -145,7 +173,7 @@ private:
             sink_.error(range(b, b + 2), "unterminated block comment '#='");
             return;
         }
-        while (i_ < text_.size() && text_[i_] != '\n') {
+        while (i_ < text_.size() && text_[i_] != '\n' && text_[i_] != '\r') {
             ++i_;
         }
     }
@@ -183,12 +211,7 @@ private:
                 spelled += ch;
             }
         }
-        if (i_ < text_.size() && is_ident_start(static_cast<unsigned char>(text_[i_])) &&
-            !utf8_op_at(text_, i_)) {
-            std::size_t e = i_;
-            while (e < text_.size() && is_ident_char(static_cast<unsigned char>(text_[e]))) {
-                ++e;
-            }
+        if (std::size_t e = ident_end(text_, i_); e > i_) {
             sink_.error(range(b, e), fmt::format("malformed number '{}'", text_.substr(b, e - b)));
             i_ = e;
             return;
@@ -196,19 +219,37 @@ private:
         auto& t = push(is_float ? TokenKind::Float : TokenKind::Int, b, i_, spelled);
         if (is_float) {
             t.float_value = std::strtod(spelled.c_str(), nullptr);
+            check_float(t);
         } else {
             errno = 0;
             t.int_value = std::strtoll(spelled.c_str(), nullptr, 10);
             if (errno == ERANGE) {
-                sink_.error(t.range, fmt::format("integer '{}' is too large", spelled));
+                sink_.error(t.range, fmt::format("integer '{}' is too large (an Int is at most "
+                                                 "9223372036854775807)",
+                                                 spelled));
             }
+        }
+    }
+
+    // As Julia does, a float literal must not overflow to infinity nor underflow to zero.
+    void check_float(const Token& t) {
+        if (std::isinf(t.float_value)) {
+            sink_.error(t.range, fmt::format("number '{}' is out of range (a Float is at most "
+                                             "about 1.8e308)",
+                                             t.text));
+        } else if (t.float_value == 0 &&
+                   t.text.substr(0, t.text.find_first_of("eE")).find_first_of("123456789") !=
+                       std::string::npos) {
+            sink_.error(t.range, fmt::format("number '{}' underflows to 0 (a Float other than 0 "
+                                             "is at least about 4.9e-324)",
+                                             t.text));
         }
     }
 
     void string() {
         std::size_t b = i_++;
         std::string out;
-        while (i_ < text_.size() && text_[i_] != '"' && text_[i_] != '\n') {
+        while (i_ < text_.size() && text_[i_] != '"' && text_[i_] != '\n' && text_[i_] != '\r') {
             char ch = text_[i_++];
             if (ch != '\\') {
                 out += ch;
@@ -251,6 +292,7 @@ private:
         push(TokenKind::String, b, i_, std::move(out));
     }
 
+    const SourceManager& sources_;
     std::uint32_t file_;
     std::string_view text_;
     DiagnosticSink& sink_;
@@ -260,6 +302,12 @@ private:
 
 // Thrown inside the parser only, to unwind to the statement being parsed; never escapes parse().
 struct SyntaxError {};
+
+// Thrown when the input nests too deeply: unwinds the whole parse (see parse()).
+struct TooDeep {};
+
+constexpr std::string_view kTooDeep = "nested deeper than 256 levels";
+static_assert(kMaxNesting == 256, "kTooDeep names the limit");
 
 class Parser {
 public:
@@ -278,6 +326,8 @@ public:
                 end_of_statement();
             } catch (const SyntaxError&) {
                 recover();
+            } catch (const TooDeep&) {
+                break;
             }
         }
         return forms;
@@ -322,6 +372,51 @@ private:
         while (peek().kind == TokenKind::Newline || at_punct(";")) {
             ++pos_;
         }
+    }
+
+    // One level of recursion of the parser, released when the guard goes out of scope; the
+    // level past kMaxNesting is an error at `at`.
+    class Level {
+    public:
+        Level(Parser& p, SourceRange at) : p_(p) {
+            if (++p_.depth_ > kMaxNesting) {
+                --p_.depth_;
+                p_.too_deep(at);
+            }
+        }
+
+        ~Level() { --p_.depth_; }
+
+        Level(const Level&) = delete;
+        Level& operator=(const Level&) = delete;
+
+    private:
+        Parser& p_;
+    };
+
+    [[noreturn]] void too_deep(SourceRange at) {
+        sink_.error(at, std::string(kTooDeep));
+        throw TooDeep{};
+    }
+
+    // A node built from its arguments (and macro): its height, checked against the limit.
+    Expr sealed(Expr e, SourceRange at) {
+        std::uint32_t below = 0;
+        for (const auto& a : e.args) {
+            below = std::max(below, a.height);
+        }
+        if (e.macro) {
+            for (const auto* list : {&e.macro->header, &e.macro->body}) {
+                for (const auto& a : *list) {
+                    below = std::max(below, a.height);
+                }
+            }
+        }
+        e.height = below + 1;
+        if (e.height > kMaxNesting) {
+            too_deep(at);
+        }
+        return e;
     }
 
     [[noreturn]] void fail_at(const Token& t, std::string message) {
@@ -393,6 +488,7 @@ private:
 
     MacroCall macro_call() {
         MacroCall m;
+        Level level(*this, peek().range);
         Token at = next();
         const Token& name = peek();
         if (name.kind != TokenKind::Ident || name.range.begin != at.range.end) {
@@ -428,6 +524,7 @@ private:
 
     // `begin statements... end`, at the `begin`; `what` names the opener for a missing `end`.
     std::vector<Expr> block(SourceRange& range, SourceRange opener, const std::string& what) {
+        Level level(*this, opener);
         std::vector<Expr> body;
         int saved = nest_;
         nest_ = 0;
@@ -457,147 +554,105 @@ private:
         return body;
     }
 
-    // Precedence, lowest first: = ; => -> ; || ; && ; == != < <= > >= ; <: ; + - ; * / ;
-    // unary - ! ; :: ; . (composition) ; calls and atoms.
-    Expr expr() { return assignment(); }
+    // Binary operators by precedence, lowest first; `=` and the arrows associate to the right,
+    // the others to the left. The prefix operators - and ! bind between `* /` and `::`, and `.`
+    // (composition) binds tightest, then calls and atoms. Precedence climbing keeps the recursion
+    // to a few frames per level of nesting, which bounds the stack a deep input needs.
+    struct OperatorLevel {
+        std::array<std::string_view, 6> ops; // unused entries are empty
+        bool right;
+    };
 
-    Expr binary(std::string op, Expr lhs, Expr rhs) {
+    static constexpr std::array<OperatorLevel, 11> kLevels{{
+        {{"="}, true},
+        {{"=>", "->"}, true},
+        {{"|>"}, false}, // Julia's pipe, `x |> (a -> false)`: first x, then the function
+        {{"||"}, false},
+        {{"&&"}, false},
+        {{"==", "!=", "<", "<=", ">", ">="}, false},
+        {{"<:"}, false},
+        {{"+", "-"}, false},
+        {{"*", "/"}, false},
+        {{"::"}, false},
+        {{"."}, false},
+    }};
+    // The level a prefix operator's operand is read at, and above which operands are atoms.
+    static constexpr std::size_t kPrefixOperand = 9;
+
+    Expr expr() { return binary_expr(0); }
+
+    // The level of the binary operator at the cursor, or kLevels.size() when there is none.
+    std::size_t operator_level() {
+        const Token& t = peek();
+        for (std::size_t i = 0; t.kind == TokenKind::Punct && i < kLevels.size(); ++i) {
+            for (auto op : kLevels[i].ops) {
+                if (!op.empty() && t.text == op) {
+                    return i;
+                }
+            }
+        }
+        return kLevels.size();
+    }
+
+    // An expression whose binary operators are all at `min` or above.
+    Expr binary_expr(std::size_t min) {
+        Expr lhs = min <= kPrefixOperand ? prefixed() : primary();
+        for (std::size_t level = operator_level(); level >= min && level < kLevels.size();
+             level = operator_level()) {
+            lhs = extended(std::move(lhs), level);
+        }
+        return lhs;
+    }
+
+    // lhs, the operator of `level` at the cursor and its right operand.
+    [[gnu::noinline]] Expr extended(Expr lhs, std::size_t level) {
+        Token op = next();
+        std::optional<Level> guard; // a right-associative chain recurses once per operator
+        if (kLevels[level].right) {
+            guard.emplace(*this, op.range);
+        }
+        Expr rhs = binary_expr(kLevels[level].right ? level : level + 1);
+        return binary(op, std::move(lhs), std::move(rhs));
+    }
+
+    // `op` is the operator's token, where a tree too deep is reported.
+    Expr binary(const Token& op, Expr lhs, Expr rhs) {
         Expr e;
         e.kind = Expr::Kind::Binary;
-        e.text = std::move(op);
+        e.text = op.text;
         e.range = lhs.range.merge(rhs.range);
         e.args.push_back(std::move(lhs));
         e.args.push_back(std::move(rhs));
-        return e;
+        return sealed(std::move(e), op.range);
     }
 
-    Expr assignment() {
-        Expr lhs = arrow();
-        if (at_punct("=")) {
-            next();
-            Expr rhs = assignment();
-            return binary("=", std::move(lhs), std::move(rhs));
+    // An operand with its prefix operators: `-x`, `!done`, `-1` (a negative literal).
+    [[gnu::noinline]] Expr prefixed() {
+        if (!at_punct("-") && !at_punct("!")) {
+            return primary();
         }
-        return lhs;
-    }
-
-    Expr arrow() {
-        Expr lhs = pipe();
-        if (at_punct("=>") || at_punct("->")) {
-            std::string op = next().text;
-            Expr rhs = arrow();
-            return binary(op, std::move(lhs), std::move(rhs));
+        Token op = next();
+        Level level(*this, op.range);
+        Expr arg = binary_expr(kPrefixOperand);
+        if (op.text == "-" && (arg.kind == Expr::Kind::Int || arg.kind == Expr::Kind::Float) &&
+            arg.text.rfind('-', 0) != 0) {
+            // A negative literal: -1 is the number, not an operation.
+            arg.int_value = -arg.int_value;
+            arg.float_value = -arg.float_value;
+            arg.text = "-" + arg.text;
+            arg.range = op.range.merge(arg.range);
+            return arg;
         }
-        return lhs;
-    }
-
-    // Julia's pipe, `x |> (a -> false)`: first x, then the function.
-    Expr pipe() {
-        Expr lhs = logical_or();
-        while (at_punct("|>")) {
-            next();
-            lhs = binary("|>", std::move(lhs), logical_or());
-        }
-        return lhs;
-    }
-
-    Expr logical_or() {
-        Expr lhs = logical_and();
-        while (at_punct("||")) {
-            next();
-            lhs = binary("||", std::move(lhs), logical_and());
-        }
-        return lhs;
-    }
-
-    Expr logical_and() {
-        Expr lhs = equality();
-        while (at_punct("&&")) {
-            next();
-            lhs = binary("&&", std::move(lhs), equality());
-        }
-        return lhs;
-    }
-
-    Expr equality() {
-        Expr lhs = subtype();
-        while (at_punct("==") || at_punct("!=") || at_punct("<") || at_punct("<=") ||
-               at_punct(">") || at_punct(">=")) {
-            std::string op = next().text;
-            lhs = binary(op, std::move(lhs), subtype());
-        }
-        return lhs;
-    }
-
-    Expr subtype() {
-        Expr lhs = additive();
-        while (at_punct("<:")) {
-            next();
-            lhs = binary("<:", std::move(lhs), additive());
-        }
-        return lhs;
-    }
-
-    Expr additive() {
-        Expr lhs = multiplicative();
-        while (at_punct("+") || at_punct("-")) {
-            std::string op = next().text;
-            lhs = binary(op, std::move(lhs), multiplicative());
-        }
-        return lhs;
-    }
-
-    Expr multiplicative() {
-        Expr lhs = unary();
-        while (at_punct("*") || at_punct("/")) {
-            std::string op = next().text;
-            lhs = binary(op, std::move(lhs), unary());
-        }
-        return lhs;
-    }
-
-    Expr unary() {
-        if (at_punct("-") || at_punct("!")) {
-            Token op = next();
-            Expr arg = unary();
-            if (op.text == "-" && (arg.kind == Expr::Kind::Int || arg.kind == Expr::Kind::Float) &&
-                arg.text.rfind('-', 0) != 0) {
-                // A negative literal: -1 is the number, not an operation.
-                arg.int_value = -arg.int_value;
-                arg.float_value = -arg.float_value;
-                arg.text = "-" + arg.text;
-                arg.range = op.range.merge(arg.range);
-                return arg;
-            }
-            Expr e;
-            e.kind = Expr::Kind::Unary;
-            e.text = op.text;
-            e.range = op.range.merge(arg.range);
-            e.args.push_back(std::move(arg));
-            return e;
-        }
-        return typed();
-    }
-
-    Expr typed() {
-        Expr lhs = composition();
-        while (at_punct("::")) {
-            next();
-            lhs = binary("::", std::move(lhs), composition());
-        }
-        return lhs;
-    }
-
-    Expr composition() {
-        Expr lhs = primary();
-        while (at_punct(".")) {
-            next();
-            lhs = binary(".", std::move(lhs), primary());
-        }
-        return lhs;
+        Expr e;
+        e.kind = Expr::Kind::Unary;
+        e.text = op.text;
+        e.range = op.range.merge(arg.range);
+        e.args.push_back(std::move(arg));
+        return sealed(std::move(e), op.range);
     }
 
     std::vector<Expr> list(std::string_view close, SourceRange& range) {
+        Level level(*this, range);
         std::vector<Expr> items;
         ++nest_;
         while (!at_punct(close)) {
@@ -608,24 +663,28 @@ private:
             next();
         }
         if (!at_punct(close)) {
-            fail_at(peek(), fmt::format("expected ',' or '{}', found {}", close, describe(peek())));
+            unclosed(close);
         }
         --nest_;
         range = range.merge(next().range);
         return items;
     }
 
+    [[noreturn, gnu::noinline]] void unclosed(std::string_view close) {
+        fail_at(peek(), fmt::format("expected ',' or '{}', found {}", close, describe(peek())));
+    }
+
     // A named edge of a query, `(f: x → y)` (DataMigrations' @join syntax), just after its '(':
     // Binary ":" of the name and the arrow; nullopt (consuming nothing) for anything else.
-    std::optional<Expr> named_edge(SourceRange& range) {
+    [[gnu::noinline]] std::optional<Expr> named_edge(SourceRange& range) {
         ++nest_;
         const Token& name = peek();
-        std::size_t colon = pos_ + 1;
-        while (colon < tokens_.size() && tokens_[colon].kind == TokenKind::Newline) {
-            ++colon;
+        std::size_t colon_at = pos_ + 1;
+        while (colon_at < tokens_.size() && tokens_[colon_at].kind == TokenKind::Newline) {
+            ++colon_at;
         }
-        if (name.kind != TokenKind::Ident || colon >= tokens_.size() ||
-            tokens_[colon].kind != TokenKind::Punct || tokens_[colon].text != ":") {
+        if (name.kind != TokenKind::Ident || colon_at >= tokens_.size() ||
+            tokens_[colon_at].kind != TokenKind::Punct || tokens_[colon_at].text != ":") {
             --nest_;
             return std::nullopt;
         }
@@ -633,130 +692,172 @@ private:
         lhs.kind = Expr::Kind::Name;
         lhs.range = name.range;
         lhs.text = next().text;
-        next(); // ':'
+        Token colon = next();
+        Level level(*this, colon.range);
         Expr arrow = expr();
         if (!at_punct(")")) {
             fail_at(peek(), fmt::format("expected ')' after the edge, found {}", describe(peek())));
         }
         --nest_;
         range = range.merge(next().range);
-        Expr e = binary(":", std::move(lhs), std::move(arrow));
+        Expr e = binary(colon, std::move(lhs), std::move(arrow));
         e.range = range;
         return e;
     }
 
+    // Calls and atoms. Each kind has its own function, kept out of line (as are the error
+    // paths), so that the frames on the recursion of a deep input stay small.
     Expr primary() {
         const Token& t = peek();
-        Expr e;
-        e.range = t.range;
         switch (t.kind) {
         case TokenKind::Int:
-            e.kind = Expr::Kind::Int;
-            e.int_value = t.int_value;
-            e.text = t.text;
-            next();
-            return e;
         case TokenKind::Float:
-            e.kind = Expr::Kind::Float;
-            e.float_value = t.float_value;
-            e.text = t.text;
-            next();
-            return e;
         case TokenKind::String:
-            e.kind = Expr::Kind::String;
-            e.text = t.text;
-            next();
-            return e;
-        case TokenKind::At: {
-            e.kind = Expr::Kind::Macro;
-            e.macro = std::make_shared<MacroCall>(macro_call());
-            e.range = e.macro->range;
-            return e;
-        }
-        case TokenKind::Ident: {
-            if (t.text == "begin") {
-                e.kind = Expr::Kind::Block;
-                e.args = block(e.range, t.range, "'begin'");
-                return e;
-            }
-            if (t.text == "end") {
-                fail_at(t, fmt::format("unexpected '{}'", t.text));
-            }
-            Token name = next();
-            if (name.text == "true" || name.text == "false") {
-                e.kind = Expr::Kind::Bool;
-                e.bool_value = name.text == "true";
-                return e;
-            }
-            e.text = name.text;
-            // A call needs the '(' right after the name, as in Julia: `f (x)` is not a call.
-            if (at_punct("(") && peek().range.begin == name.range.end) {
-                next();
-                e.kind = Expr::Kind::Call;
-                e.name_range = name.range;
-                e.args = list(")", e.range);
-                return e;
-            }
-            e.kind = Expr::Kind::Name;
-            return e;
-        }
+            return literal();
+        case TokenKind::At:
+            return macro_expr();
+        case TokenKind::Ident:
+            return t.text == "begin" ? block_expr() : name_or_call();
         case TokenKind::Punct:
             if (t.text == "(") {
-                next();
-                if (auto edge = named_edge(e.range)) {
-                    return std::move(*edge);
-                }
-                e.args = list(")", e.range);
-                if (e.args.size() == 1) {
-                    // Plain parentheses: keep the inner expression, widen its range.
-                    Expr inner = std::move(e.args[0]);
-                    inner.range = e.range;
-                    return inner;
-                }
-                e.kind = Expr::Kind::Tuple;
-                return e;
+                return parenthesized();
             }
             if (t.text == ":") {
-                Token colon = next();
-                const Token& n = peek();
-                if (n.kind != TokenKind::Ident || n.range.begin != colon.range.end) {
-                    fail_at(colon, "expected a name right after ':' (a symbol such as :unstack)");
-                }
-                e.kind = Expr::Kind::Symbol;
-                e.text = n.text;
-                e.range = colon.range.merge(next().range);
-                return e;
+                return symbol();
             }
             if (t.text == "[") {
-                next();
-                e.kind = Expr::Kind::Vector;
-                e.args = list("]", e.range);
-                return e;
+                return vector();
             }
             if (t.text == "-") {
-                Token minus = next();
-                const Token& n = peek();
-                if (n.kind == TokenKind::Int || n.kind == TokenKind::Float) {
-                    e = primary();
-                    e.int_value = -e.int_value;
-                    e.float_value = -e.float_value;
-                    e.text = "-" + e.text;
-                    e.range = minus.range.merge(e.range);
-                    return e;
-                }
-                fail_at(minus, "expected a number after '-'");
+                return negative_number();
             }
             break;
         default:
             break;
         }
-        fail_at(t, fmt::format("expected an expression, found {}", describe(t)));
+        unexpected_token();
+    }
+
+    [[noreturn, gnu::noinline]] void unexpected_token() {
+        fail_at(peek(), fmt::format("expected an expression, found {}", describe(peek())));
+    }
+
+    [[gnu::noinline]] Expr literal() {
+        Token t = next();
+        Expr e;
+        e.range = t.range;
+        e.kind = t.kind == TokenKind::Int     ? Expr::Kind::Int
+                 : t.kind == TokenKind::Float ? Expr::Kind::Float
+                                              : Expr::Kind::String;
+        e.int_value = t.int_value;
+        e.float_value = t.float_value;
+        e.text = std::move(t.text);
+        return e;
+    }
+
+    [[gnu::noinline]] Expr macro_expr() {
+        Expr e;
+        e.kind = Expr::Kind::Macro;
+        e.macro = std::make_shared<MacroCall>(macro_call());
+        e.range = e.macro->range;
+        SourceRange at = e.macro->name_range;
+        return sealed(std::move(e), at);
+    }
+
+    [[gnu::noinline]] Expr block_expr() {
+        Expr e;
+        e.kind = Expr::Kind::Block;
+        SourceRange opener = peek().range;
+        e.range = opener;
+        e.args = block(e.range, opener, "'begin'");
+        return sealed(std::move(e), opener);
+    }
+
+    [[gnu::noinline]] Expr name_or_call() {
+        if (at_ident("end")) {
+            fail_at(peek(), "unexpected 'end'");
+        }
+        Token name = next();
+        Expr e;
+        e.range = name.range;
+        if (name.text == "true" || name.text == "false") {
+            e.kind = Expr::Kind::Bool;
+            e.bool_value = name.text == "true";
+            return e;
+        }
+        e.text = std::move(name.text);
+        // A call needs the '(' right after the name, as in Julia: `f (x)` is not a call.
+        if (at_punct("(") && peek().range.begin == name.range.end) {
+            next();
+            e.kind = Expr::Kind::Call;
+            e.name_range = name.range;
+            e.args = list(")", e.range);
+            return sealed(std::move(e), name.range);
+        }
+        e.kind = Expr::Kind::Name;
+        return e;
+    }
+
+    // `(x)` (the inner expression, its range widened), a tuple `(a, b)` or a named edge.
+    [[gnu::noinline]] Expr parenthesized() {
+        Expr e;
+        e.range = next().range;
+        SourceRange open = e.range;
+        if (auto edge = named_edge(e.range)) {
+            return std::move(*edge);
+        }
+        e.args = list(")", e.range);
+        if (e.args.size() == 1) {
+            Expr inner = std::move(e.args[0]);
+            inner.range = e.range;
+            return inner;
+        }
+        e.kind = Expr::Kind::Tuple;
+        return sealed(std::move(e), open);
+    }
+
+    [[gnu::noinline]] Expr symbol() {
+        Token colon = next();
+        const Token& n = peek();
+        if (n.kind != TokenKind::Ident || n.range.begin != colon.range.end) {
+            fail_at(colon, "expected a name right after ':' (a symbol such as :unstack)");
+        }
+        Expr e;
+        e.kind = Expr::Kind::Symbol;
+        e.text = n.text;
+        e.range = colon.range.merge(next().range);
+        return e;
+    }
+
+    [[gnu::noinline]] Expr vector() {
+        Expr e;
+        e.kind = Expr::Kind::Vector;
+        e.range = next().range;
+        SourceRange open = e.range;
+        e.args = list("]", e.range);
+        return sealed(std::move(e), open);
+    }
+
+    // `-1` where an atom is expected (after `::` or `.`).
+    [[gnu::noinline]] Expr negative_number() {
+        Token minus = next();
+        const Token& n = peek();
+        if (n.kind != TokenKind::Int && n.kind != TokenKind::Float) {
+            fail_at(minus, "expected a number after '-'");
+        }
+        Expr e = literal();
+        e.int_value = -e.int_value;
+        e.float_value = -e.float_value;
+        e.text = "-" + e.text;
+        e.range = minus.range.merge(e.range);
+        return e;
     }
 
     std::vector<Token> tokens_;
     DiagnosticSink& sink_;
     std::size_t pos_ = 0;
     int nest_ = 0;
+    std::uint32_t depth_ = 0; // levels of recursion, see Level
 };
 
 } // namespace
@@ -827,16 +928,8 @@ std::string to_string(const Expr& e) {
 }
 
 bool is_identifier(std::string_view s) {
-    if (s.empty() || !is_ident_start(static_cast<unsigned char>(s[0])) || s == "begin" ||
-        s == "end" || s == "true" || s == "false") {
-        return false;
-    }
-    for (std::size_t i = 0; i < s.size(); ++i) {
-        if (!is_ident_char(static_cast<unsigned char>(s[i])) || utf8_op_at(s, i)) {
-            return false;
-        }
-    }
-    return true;
+    return !s.empty() && ident_end(s, 0) == s.size() && s != "begin" && s != "end" && s != "true" &&
+           s != "false";
 }
 
 } // namespace catplan::lang

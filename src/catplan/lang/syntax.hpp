@@ -32,7 +32,9 @@ struct Token {
 };
 
 /// Splits a buffer into tokens ending with Eof; bad characters, unterminated strings and block
-/// comments are reported to `sink` and skipped. Composition dots `⋅` and `·` become ".", `→` "->".
+/// comments, numbers out of range are reported to `sink` and skipped. Composition dots `⋅` and `·`
+/// become ".", `→` "->". A byte-order mark at the start is skipped; a file that is not UTF-8 gives
+/// its encoding errors and no tokens.
 std::vector<Token> lex(const SourceManager& sources, std::uint32_t file, DiagnosticSink& sink);
 
 struct MacroCall;
@@ -64,6 +66,8 @@ struct Expr {
     bool bool_value = false;
     std::vector<Expr> args;
     std::shared_ptr<MacroCall> macro;
+    /// The levels of the tree from this node down (1 for a leaf); never above kMaxNesting.
+    std::uint32_t height = 1;
 
     bool is_binary(std::string_view op) const { return kind == Kind::Binary && text == op; }
 };
@@ -87,7 +91,8 @@ struct ParsedFile {
 };
 
 /// Lexes and parses a buffer; syntax errors go to `sink` and the parser resumes at the next
-/// statement, so the result holds every form that parsed.
+/// statement, so the result holds every form that parsed. Nesting deeper than kMaxNesting
+/// (source.hpp) is an error that ends the parse, since where the nested form ends is unknown.
 ParsedFile parse(const SourceManager& sources, std::uint32_t file, DiagnosticSink& sink);
 
 /// The expression as source-like text (for messages and tests): `f(x) == "red"`.

@@ -196,6 +196,121 @@ TEST(Parser, ReportsMissingEnd) {
     EXPECT_NE(p.sink.render().find("missing 'end' for '@present'"), std::string::npos);
 }
 
+TEST(Lexer, IdentifiersHoldLettersAsUnicodeDefinesThem) {
+    Lexed l("λ積 x\u0308 _a1");
+    EXPECT_FALSE(l.sink.has_errors()) << l.sink.render();
+    EXPECT_EQ(l.texts(), (std::vector<std::string>{"λ積", "x\u0308", "_a1"}));
+    Lexed emoji("bread🍞 = 1");
+    ASSERT_EQ(emoji.sink.num_errors(), 1u);
+    EXPECT_NE(emoji.sink.render().find("t.cp:1:6: error: unexpected character '🍞' (U+1F35E)"),
+              std::string::npos)
+        << emoji.sink.render();
+}
+
+TEST(Lexer, RejectsInvalidUtf8BeforeAnythingElse) {
+    Lexed l("@present S(FreeSchema) begin\n  X\xFF::Ob\n  \"\xC0\xAF\"\nend\n");
+    ASSERT_EQ(l.sink.num_errors(), 2u) << l.sink.render();
+    auto text = l.sink.render();
+    EXPECT_NE(text.find("t.cp:2:4: error: invalid UTF-8"), std::string::npos) << text;
+    EXPECT_NE(text.find("t.cp:3:4: error: invalid UTF-8"), std::string::npos) << text;
+}
+
+TEST(Lexer, SkipsAByteOrderMark) {
+    Lexed l("\xEF\xBB\xBFX Y");
+    EXPECT_FALSE(l.sink.has_errors()) << l.sink.render();
+    EXPECT_EQ(l.texts(), (std::vector<std::string>{"X", "Y"}));
+    Lexed twice("\xEF\xBB\xBF\xEF\xBB\xBFX"); // only the first is a byte-order mark
+    EXPECT_EQ(twice.sink.num_errors(), 1u);
+}
+
+TEST(Lexer, EndsLinesAtLfCrlfAndLoneCr) {
+    Lexed l("a\rb # comment\rc\r\nd");
+    EXPECT_FALSE(l.sink.has_errors());
+    std::vector<std::string> kinds;
+    for (const auto& t : l.tokens) {
+        kinds.push_back(t.kind == TokenKind::Newline ? "NL" : t.text);
+    }
+    EXPECT_EQ(kinds, (std::vector<std::string>{"a", "NL", "b", "NL", "c", "NL", "d", "NL", ""}));
+    EXPECT_EQ(l.sources.line_col(l.tokens[6].range.file, l.tokens[6].range.begin).line, 4u);
+}
+
+TEST(Lexer, RejectsNumbersOutOfRange) {
+    Lexed l("1e999 -1e999 1e-999 9223372036854775808 1.5e308 4.9e-324 0e-999 "
+            "9223372036854775807");
+    auto text = l.sink.render();
+    EXPECT_EQ(l.sink.num_errors(), 4u) << text;
+    EXPECT_NE(text.find("t.cp:1:1: error: number '1e999' is out of range"), std::string::npos)
+        << text;
+    EXPECT_NE(text.find("t.cp:1:8: error: number '1e999' is out of range"), std::string::npos);
+    EXPECT_NE(text.find("t.cp:1:14: error: number '1e-999' underflows"), std::string::npos);
+    EXPECT_NE(text.find("t.cp:1:21: error: integer '9223372036854775808' is too large"),
+              std::string::npos);
+    EXPECT_EQ(l.tokens[8].int_value, INT64_MAX);
+}
+
+// A form nesting `depth` levels of `open` ... `close` around x.
+std::string nested(const std::string& open, const std::string& close, std::size_t depth) {
+    std::string s;
+    for (std::size_t i = 0; i < depth; ++i) {
+        s += open;
+    }
+    s += "x";
+    for (std::size_t i = 0; i < depth; ++i) {
+        s += close;
+    }
+    return "@present S(FreeSchema) begin\n  " + s + "\nend\n";
+}
+
+TEST(Parser, NestingIsLimitedWithALocatedError) {
+    // Deep enough to overflow the stack without a limit (about 2,000 levels did).
+    for (auto [open, close] : std::vector<std::pair<std::string, std::string>>{{"(", ")"},
+                                                                               {"f(", ")"},
+                                                                               {"[", "]"},
+                                                                               {"-", ""},
+                                                                               {"!", ""},
+                                                                               {"x = ", ""},
+                                                                               {"x -> ", ""},
+                                                                               {"begin ", " end"},
+                                                                               {"@m(", ")"}}) {
+        Parsed deep(nested(open, close, 100000));
+        ASSERT_TRUE(deep.sink.has_errors()) << open;
+        EXPECT_NE(deep.sink.render().find("error: nested deeper than 256 levels"),
+                  std::string::npos)
+            << open << deep.sink.render().substr(0, 500);
+    }
+}
+
+TEST(Parser, ALongOperatorChainCountsAsNesting) {
+    // `1 + 1 + ...` is a left-deep tree: its destructor and the elaborator recurse on it.
+    std::string chain = "1";
+    for (int i = 0; i < 100000; ++i) {
+        chain += " + 1";
+    }
+    Parsed p("@present S(FreeSchema) begin\n  x == " + chain + "\nend\n");
+    ASSERT_TRUE(p.sink.has_errors());
+    EXPECT_NE(p.sink.render().find("t.cp:2:"), std::string::npos);
+    EXPECT_NE(p.sink.render().find("nested deeper than 256 levels"), std::string::npos);
+    // Parentheses around chains add up.
+    std::string sum = "1";
+    for (int i = 0; i < 10; ++i) {
+        sum = "(" + sum;
+        for (int k = 0; k < 30; ++k) {
+            sum += " + 1";
+        }
+        sum += ")";
+    }
+    Parsed q("@present S(FreeSchema) begin\n  x == " + sum + "\nend\n");
+    EXPECT_NE(q.sink.render().find("nested deeper than 256 levels"), std::string::npos);
+}
+
+TEST(Parser, NestingUpToTheLimitParses) {
+    // 255 parentheses inside the statement (whose `x` and `::` make the rest of the 256 levels).
+    Parsed p(nested("(", ")", 200));
+    EXPECT_FALSE(p.sink.has_errors()) << p.sink.render().substr(0, 300);
+    Parsed f(nested("f(", ")", 250));
+    EXPECT_FALSE(f.sink.has_errors()) << f.sink.render().substr(0, 300);
+}
+
 TEST(Identifier, RejectsKeywordsAndOperators) {
     EXPECT_TRUE(is_identifier("gripper"));
     EXPECT_TRUE(is_identifier("_x1"));
@@ -205,6 +320,9 @@ TEST(Identifier, RejectsKeywordsAndOperators) {
     EXPECT_FALSE(is_identifier("a b"));
     EXPECT_FALSE(is_identifier("a⋅b"));
     EXPECT_FALSE(is_identifier(""));
+    EXPECT_TRUE(is_identifier("Größe"));
+    EXPECT_FALSE(is_identifier("🍞"));
+    EXPECT_FALSE(is_identifier("a\xFF"));
 }
 
 } // namespace

@@ -1,9 +1,12 @@
 #include "catplan/pddl/ipc_plan.hpp"
 
+#include "catplan/base/unicode.hpp"
 #include "catplan/plan/validate.hpp"
 #include "catplan/rewrite/dpo.hpp"
 
 #include <cctype>
+#include <cmath>
+#include <cstdlib>
 #include <fmt/format.h>
 
 namespace catplan::pddl {
@@ -18,44 +21,206 @@ std::string lower(std::string_view s) {
     return out;
 }
 
-/// One line's step `(name args...)` between `open` and its `)`; nullopt after an error.
-std::optional<IpcStep> parse_step(std::string_view line, std::size_t open, std::uint32_t file,
-                                  std::uint32_t line_start, DiagnosticSink& sink) {
-    std::size_t close = line.find(')', open);
-    auto at = [&](std::size_t b, std::size_t e) {
-        return SourceRange{file, static_cast<std::uint32_t>(line_start + b),
-                           static_cast<std::uint32_t>(line_start + e)};
-    };
-    if (close == std::string_view::npos) {
-        sink.error(at(open, open + 1), "unbalanced parentheses: this '(' is never closed");
-        return std::nullopt;
-    }
-    if (line.find('(', open + 1) < close) {
-        sink.error(at(open, close + 1), "expected a ground action '(name object ...)'");
-        return std::nullopt;
-    }
-    IpcStep step;
-    step.range = at(open, close + 1);
-    std::size_t i = open + 1;
-    while (i < close) {
-        while (i < close && std::isspace(static_cast<unsigned char>(line[i]))) {
-            ++i;
+// Reads the IPC plan lines: `[T:] (action object ...) [[D]]`, `;` comments, blank lines.
+class IpcReader {
+public:
+    IpcReader(std::uint32_t file, std::string_view text, DiagnosticSink& sink)
+        : file_(file), text_(text), sink_(sink) {}
+
+    std::optional<IpcPlan> read() {
+        IpcPlan plan;
+        bool ok = true;
+        for (i_ = bom_length(text_); i_ < text_.size();) {
+            auto step = line();
+            if (step == Line::Step) {
+                plan.push_back(std::move(step_));
+            }
+            ok = ok && step != Line::Bad;
+            // Past the rest of the line (after an error) and its end: LF, CRLF or CR.
+            while (i_ < text_.size() && !at_line_end()) {
+                ++i_;
+            }
+            i_ += text_.substr(i_, 2) == "\r\n" ? 2 : 1;
         }
-        std::size_t b = i;
-        while (i < close && !std::isspace(static_cast<unsigned char>(line[i]))) {
-            ++i;
-        }
-        if (b < i) {
-            (step.action.empty() ? step.action : step.args.emplace_back()) =
-                lower(line.substr(b, i - b));
+        return ok ? std::optional(std::move(plan)) : std::nullopt;
+    }
+
+private:
+    enum class Line { Blank, Step, Bad };
+
+    bool at_line_end() const { return text_[i_] == '\n' || text_[i_] == '\r'; }
+
+    bool at_end_of_line() const { return i_ >= text_.size() || at_line_end() || text_[i_] == ';'; }
+
+    static bool is_name_char(char c) {
+        return std::isspace(static_cast<unsigned char>(c)) == 0 &&
+               std::string_view("()[];").find(c) == std::string_view::npos;
+    }
+
+    SourceRange range(std::size_t b, std::size_t e) const {
+        return {file_, static_cast<std::uint32_t>(b), static_cast<std::uint32_t>(e)};
+    }
+
+    void blanks() {
+        while (i_ < text_.size() && (text_[i_] == ' ' || text_[i_] == '\t')) {
+            ++i_;
         }
     }
-    if (step.action.empty()) {
-        sink.error(step.range, "expected an action name in '()'");
-        return std::nullopt;
+
+    std::size_t name_end(std::size_t from) const {
+        while (from < text_.size() && is_name_char(text_[from])) {
+            ++from;
+        }
+        return from;
     }
-    return step;
-}
+
+    Line bad(std::size_t b, std::size_t e, std::string message) {
+        sink_.error(range(b, std::max(e, b + 1)), std::move(message));
+        return Line::Bad;
+    }
+
+    // A time stamp `T:` or a duration's `D`: a non-negative decimal number, finite.
+    bool number() {
+        std::size_t b = i_;
+        auto digits = [&] {
+            std::size_t from = i_;
+            while (i_ < text_.size() && std::isdigit(static_cast<unsigned char>(text_[i_]))) {
+                ++i_;
+            }
+            return i_ > from;
+        };
+        bool whole = digits();
+        bool fraction = false;
+        if (i_ < text_.size() && text_[i_] == '.') {
+            ++i_;
+            fraction = digits();
+        }
+        if (!whole && !fraction) {
+            i_ = b;
+            return false;
+        }
+        if (i_ < text_.size() && (text_[i_] == 'e' || text_[i_] == 'E')) {
+            ++i_;
+            if (i_ < text_.size() && (text_[i_] == '+' || text_[i_] == '-')) {
+                ++i_;
+            }
+            if (!digits()) {
+                i_ = b;
+                return false;
+            }
+        }
+        std::string spelled(text_.substr(b, i_ - b));
+        if (std::isinf(std::strtod(spelled.c_str(), nullptr))) {
+            bad(b, i_, fmt::format("number '{}' is out of range", spelled));
+            return false;
+        }
+        return true;
+    }
+
+    Line line() {
+        blanks();
+        if (at_end_of_line()) {
+            return Line::Blank;
+        }
+        std::size_t b = i_;
+        if (text_[i_] != '(') {
+            // A time stamp, as temporal planners write: `0.000: (pick a)`.
+            std::size_t errors = sink_.num_errors();
+            if (!number() || i_ >= text_.size() || text_[i_] != ':') {
+                return sink_.num_errors() > errors
+                           ? Line::Bad
+                           : bad(b, name_end(b), "expected a step '(action object ...)'");
+            }
+            ++i_;
+            blanks();
+            if (i_ >= text_.size() || text_[i_] != '(') {
+                return bad(i_, name_end(i_),
+                           "expected a step '(action object ...)' after the "
+                           "time stamp");
+            }
+        }
+        if (!step()) {
+            return Line::Bad;
+        }
+        blanks();
+        if (i_ < text_.size() && text_[i_] == '[' && !duration()) {
+            return Line::Bad;
+        }
+        blanks();
+        if (!at_end_of_line()) {
+            std::size_t e = i_;
+            while (e < text_.size() && text_[e] != '\n' && text_[e] != '\r' && text_[e] != ';') {
+                ++e;
+            }
+            return bad(i_, e,
+                       text_[i_] == '(' ? "expected one step per line, found a second '('"
+                                        : "unexpected text after the step");
+        }
+        return Line::Step;
+    }
+
+    // `(name object ...)` at '('.
+    bool step() {
+        std::size_t open = i_++;
+        step_ = IpcStep{};
+        while (true) {
+            blanks();
+            if (at_end_of_line()) {
+                bad(open, open + 1, "unbalanced parentheses: this '(' is never closed");
+                return false;
+            }
+            if (text_[i_] == ')') {
+                ++i_;
+                break;
+            }
+            std::size_t e = name_end(i_);
+            if (e == i_) {
+                bad(i_, i_ + 1,
+                    fmt::format("expected an object name or ')' in a step, found '{}'", text_[i_]));
+                return false;
+            }
+            std::string word = lower(text_.substr(i_, e - i_));
+            if (step_.action.empty()) {
+                step_.action = std::move(word);
+                step_.action_range = range(i_, e);
+            } else {
+                step_.args.push_back(std::move(word));
+                step_.arg_ranges.push_back(range(i_, e));
+            }
+            i_ = e;
+        }
+        step_.range = range(open, i_);
+        if (step_.action.empty()) {
+            bad(open, i_, "expected an action name in '()'");
+            return false;
+        }
+        return true;
+    }
+
+    // `[D]`, the duration of a temporal step, at '['.
+    bool duration() {
+        std::size_t b = i_++;
+        blanks();
+        std::size_t errors = sink_.num_errors();
+        bool ok = number();
+        blanks();
+        if (!ok || i_ >= text_.size() || text_[i_] != ']') {
+            if (sink_.num_errors() == errors) {
+                bad(b, std::min(i_ + 1, text_.size()),
+                    "expected a duration '[number]' after the step");
+            }
+            return false;
+        }
+        ++i_;
+        return true;
+    }
+
+    std::uint32_t file_;
+    std::string_view text_;
+    DiagnosticSink& sink_;
+    std::size_t i_ = 0;
+    IpcStep step_;
+};
 
 /// The variant of `av` the step's arguments are consistent with, as a rule-level step.
 std::optional<plan::Step> rule_step(const Variant& v, const IpcStep& s) {
@@ -89,24 +254,47 @@ Atom ground(const Action& a, const Atom& atom, const IpcStep& s) {
     return g;
 }
 
-/// Why a step cannot apply in PDDL terms (arity, objects, types, the first false
-/// precondition), or nullopt when its precondition holds.
-std::optional<std::string> pddl_problem(const Import& im, const acset::ACSet& x, const Action& a,
-                                        const IpcStep& s) {
-    if (s.args.size() != a.params.size()) {
-        return fmt::format("'{}' takes {} argument{}, got {}", a.name, a.params.size(),
-                           a.params.size() == 1 ? "" : "s", s.args.size());
+struct StepProblem {
+    SourceRange at;
+    std::string message;
+};
+
+/// What is wrong with a step whatever the state: an unknown action (then nothing else), a wrong
+/// number of arguments (then nothing else), each unknown object and each argument of a wrong type.
+std::vector<StepProblem> static_problems(const Import& im, const IpcStep& s) {
+    auto at = [&](SourceRange r) { return r.valid() ? r : s.range; };
+    const Action* a = im.pddl_domain.find_action(s.action);
+    if (a == nullptr || im.find_action(s.action) == nullptr) {
+        std::vector<std::string> names;
+        for (const auto& action : im.pddl_domain.actions) {
+            names.push_back(action.name);
+        }
+        return {
+            {at(s.action_range), fmt::format("unknown action '{}' (domain {} has: {})", s.action,
+                                             im.pddl_domain.name, fmt::join(names, ", "))}};
     }
+    if (s.args.size() != a->params.size()) {
+        return {{s.range, fmt::format("'{}' takes {} argument{}, got {}", a->name, a->params.size(),
+                                      a->params.size() == 1 ? "" : "s", s.args.size())}};
+    }
+    std::vector<StepProblem> out;
     for (std::size_t i = 0; i < s.args.size(); ++i) {
+        SourceRange arg = at(i < s.arg_ranges.size() ? s.arg_ranges[i] : SourceRange{});
         const TypedName* o = find_object(im.pddl_domain, *im.pddl_problem, s.args[i]);
         if (o == nullptr) {
-            return fmt::format("unknown object '{}'", s.args[i]);
-        }
-        if (!im.pddl_domain.is_subtype(o->type, a.params[i].type)) {
-            return fmt::format("argument {} (?{}) must be a {}, and '{}' is a {}", i + 1,
-                               a.params[i].name, a.params[i].type, o->name, o->type);
+            out.push_back({arg, fmt::format("unknown object '{}'", s.args[i])});
+        } else if (!im.pddl_domain.is_subtype(o->type, a->params[i].type)) {
+            out.push_back(
+                {arg, fmt::format("argument {} (?{}) must be a {}, and '{}' is a {}", i + 1,
+                                  a->params[i].name, a->params[i].type, o->name, o->type)});
         }
     }
+    return out;
+}
+
+/// The first precondition of the step's action that does not hold in x, in words.
+std::optional<std::string> false_precondition(const Import& im, const acset::ACSet& x,
+                                              const Action& a, const IpcStep& s) {
     for (const auto& l : a.precondition) {
         Atom g = ground(a, l.atom, s);
         bool h = g.predicate == "=" ? g.args[0].name == g.args[1].name : holds(im, x, g);
@@ -130,32 +318,22 @@ std::string IpcStep::to_string() const {
 
 std::optional<IpcPlan> parse_ipc_plan(std::uint32_t file, const SourceManager& sources,
                                       DiagnosticSink& sink) {
-    std::string_view text = sources.text(file);
-    IpcPlan plan;
+    if (!check_utf8(sources, file, sink)) {
+        return std::nullopt;
+    }
+    return IpcReader(file, sources.text(file), sink).read();
+}
+
+bool check_ipc_plan(const Import& import, const IpcPlan& plan, DiagnosticSink& sink) {
+    CATPLAN_ASSERT(import.pddl_problem.has_value(), "a plan is checked against a problem");
     bool ok = true;
-    std::size_t start = 0;
-    while (start <= text.size()) {
-        std::size_t end = std::min(text.find('\n', start), text.size());
-        std::string_view line = text.substr(start, end - start);
-        line = line.substr(0, std::min(line.find(';'), line.size()));
-        std::size_t open = line.find('(');
-        std::size_t first = line.find_first_not_of(" \t\r");
-        if (open != std::string_view::npos) {
-            // Anything before '(' must be a time stamp `0.000:`; after ')', a duration `[1]`.
-            auto step = parse_step(line, open, file, static_cast<std::uint32_t>(start), sink);
-            ok = ok && step.has_value();
-            if (step) {
-                plan.push_back(std::move(*step));
-            }
-        } else if (first != std::string_view::npos) {
-            sink.error(SourceRange{file, static_cast<std::uint32_t>(start + first),
-                                   static_cast<std::uint32_t>(end)},
-                       "expected a ground action '(name object ...)'");
+    for (const auto& step : plan) {
+        for (auto& problem : static_problems(import, step)) {
+            sink.error(problem.at, std::move(problem.message));
             ok = false;
         }
-        start = end + 1;
     }
-    return ok ? std::optional(plan) : std::nullopt;
+    return ok;
 }
 
 std::string write_ipc_plan(const IpcPlan& plan) {
@@ -219,14 +397,13 @@ IpcValidation validate_ipc_plan(const Import& im, const IpcPlan& plan) {
     for (std::size_t i = 0; i < plan.size() && !v.failed_step; ++i) {
         const IpcStep& s = plan[i];
         auto prefix = fmt::format("step {} {}", i + 1, s.to_string());
-        const ActionVariants* av = im.find_action(s.action);
-        const Action* a = im.pddl_domain.find_action(s.action);
-        if (av == nullptr || a == nullptr) {
+        if (auto problems = static_problems(im, s); !problems.empty()) {
             v.failed_step = i;
-            v.reason = fmt::format("{}: unknown action '{}'", prefix, s.action);
+            v.reason = fmt::format("{}: {}", prefix, problems[0].message);
             break;
         }
-        if (auto why = pddl_problem(im, x, *a, s)) {
+        const ActionVariants* av = im.find_action(s.action);
+        if (auto why = false_precondition(im, x, *im.pddl_domain.find_action(s.action), s)) {
             v.failed_step = i;
             v.reason = fmt::format("{}: {}", prefix, *why);
             break;

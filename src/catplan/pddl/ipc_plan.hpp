@@ -2,8 +2,15 @@
 // IPC plan files, and validating them against an imported PDDL problem.
 //
 // An IPC plan is one ground action per line, `(unstack e d)`, with `;` comments; the last line of
-// a plan written by catplan is `; cost = N (unit cost)`, as IPC planners write it. Timed plans
-// (`0.000: (unstack e d) [1]`) are read too, the time and duration ignored.
+// a plan written by catplan is `; cost = N (unit cost)`, as IPC planners (Fast Downward) write it.
+// Timed plans (`0.000: (unstack e d) [1]`) are read too, the time and duration ignored. Anything
+// else on a line is an error: text before the step that is not a time stamp, a second step, text
+// after the step or its duration. Names are lowered, as PDDL's are.
+//
+// check_ipc_plan reports what is wrong with a plan whatever the state: an unknown action, a wrong
+// number of arguments, an unknown object or one of the wrong type. Those are bad input (exit 2 on
+// the command line); validation judges the rest, a plan whose step does not apply or whose goal
+// is not reached.
 //
 // Validation replays the plan with PDDL's meaning on the imported rules: a step's arguments pick
 // the variants of its action consistent with them (import.hpp), and the one whose match exists
@@ -26,6 +33,8 @@ struct IpcStep {
     std::string action;
     std::vector<std::string> args;
     SourceRange range;
+    SourceRange action_range = {};
+    std::vector<SourceRange> arg_ranges = {}; // parallel to args (empty for a step not read)
 
     /// "(unstack e d)".
     std::string to_string() const;
@@ -36,6 +45,10 @@ using IpcPlan = std::vector<IpcStep>;
 /// Reads an IPC plan file; every syntax error goes to sink; nullopt when there was one.
 std::optional<IpcPlan> parse_ipc_plan(std::uint32_t file, const SourceManager& sources,
                                       DiagnosticSink& sink);
+
+/// Reports every step that names an unknown action or object, or gives an action the wrong number
+/// or types of arguments (located at the step's text); returns whether there was none.
+bool check_ipc_plan(const Import& import, const IpcPlan& plan, DiagnosticSink& sink);
 
 /// The plan one step per line, ending with `; cost = N (unit cost)`.
 std::string write_ipc_plan(const IpcPlan& plan);

@@ -1,3 +1,4 @@
+#include "catplan/base/unicode.hpp"
 #include "catplan/pddl/pddl.hpp"
 
 #include <algorithm>
@@ -32,13 +33,17 @@ public:
         : file_(file), text_(text), sink_(sink) {}
 
     /// The one top-level list of the file; nullopt after reporting a problem.
-    std::optional<SExpr> read_file() {
+    std::optional<SExpr> read_file(const SourceManager& sources) {
+        if (!check_utf8(sources, file_, sink_)) {
+            return std::nullopt;
+        }
+        i_ = bom_length(text_);
         skip();
         if (i_ >= text_.size()) {
             sink_.error(range(0, 0), "empty PDDL file: expected '(define ...)'");
             return std::nullopt;
         }
-        auto e = read();
+        auto e = read(1);
         if (!e) {
             return std::nullopt;
         }
@@ -62,7 +67,7 @@ private:
             if (std::isspace(static_cast<unsigned char>(text_[i_]))) {
                 ++i_;
             } else if (text_[i_] == ';') {
-                while (i_ < text_.size() && text_[i_] != '\n') {
+                while (i_ < text_.size() && text_[i_] != '\n' && text_[i_] != '\r') {
                     ++i_;
                 }
             } else {
@@ -71,7 +76,9 @@ private:
         }
     }
 
-    std::optional<SExpr> read() {
+    // The expression at i_, `depth` levels down (the top level is 1): deeper than kMaxNesting is an
+    // error, so that neither this recursion nor the tree's destructor exhausts the stack.
+    std::optional<SExpr> read(std::uint32_t depth) {
         SExpr e;
         std::size_t start = i_;
         if (text_[i_] == ')') {
@@ -87,6 +94,10 @@ private:
             e.range = range(start, i_);
             return e;
         }
+        if (depth > kMaxNesting) {
+            sink_.error(range(i_, i_ + 1), "nested deeper than 256 levels");
+            return std::nullopt;
+        }
         e.list = true;
         ++i_;
         for (;;) {
@@ -101,7 +112,7 @@ private:
                 e.range = range(start, i_);
                 return e;
             }
-            auto item = read();
+            auto item = read(depth + 1);
             if (!item) {
                 return std::nullopt;
             }
@@ -134,9 +145,9 @@ public:
 
     bool failed() const { return errors_ > 0; }
 
-    void error(SourceRange r, std::string message) {
-        sink_.error(r, std::move(message));
+    Diagnostic& error(SourceRange r, std::string message) {
         ++errors_;
+        return sink_.error(r, std::move(message));
     }
 
     /// `a b - t c` (names or variables) into typed names; `(either ...)` is refused.
@@ -176,6 +187,32 @@ public:
             out.push_back({variables ? e.atom.substr(1) : e.atom, "object", e.range});
         }
         return out;
+    }
+
+    /// Reports each name of `names` declared before in `names` or in `earlier`; `what` is
+    /// "parameter", "constant" or "object".
+    void report_duplicates(const std::vector<TypedName>& names, std::string_view what,
+                           const std::vector<TypedName>& earlier = {}) {
+        auto first = [&](std::size_t i) -> const TypedName* {
+            for (const auto& e : earlier) {
+                if (e.name == names[i].name) {
+                    return &e;
+                }
+            }
+            for (std::size_t k = 0; k < i; ++k) {
+                if (names[k].name == names[i].name) {
+                    return &names[k];
+                }
+            }
+            return nullptr;
+        };
+        for (std::size_t i = 0; i < names.size(); ++i) {
+            if (const TypedName* f = first(i)) {
+                error(names[i].range, fmt::format("the {} '{}{}' is declared twice", what,
+                                                  what == "parameter" ? "?" : "", names[i].name))
+                    .notes.emplace_back(f->range, "first declared here");
+            }
+        }
     }
 
     /// Whether a list starts with the keyword.
@@ -431,6 +468,7 @@ void read_predicates(Parser& p, const SExpr& e, Domain& d) {
         }
         d.predicates.push_back(
             {pe.items[0].atom, p.typed_list(pe.items, 1, true, &d, "a predicate"), pe.range});
+        p.report_duplicates(d.predicates.back().params, "parameter");
     }
 }
 
@@ -488,6 +526,7 @@ void read_action(Parser& p, const SExpr& e, Domain& d) {
                 return;
             }
             a.params = p.typed_list(value.items, 0, true, &d, "the parameters");
+            p.report_duplicates(a.params, "parameter");
         } else if (key.is_atom(":precondition")) {
             auto pre = fr.conjunction(value, true, true);
             if (pre) {
@@ -517,7 +556,9 @@ void read_domain_section(Parser& p, const SExpr& e, Domain& d) {
     } else if (h == ":types") {
         read_types(p, e, d);
     } else if (h == ":constants") {
-        d.constants = p.typed_list(e.items, 1, false, &d, "(:constants ...)");
+        auto more = p.typed_list(e.items, 1, false, &d, "(:constants ...)");
+        p.report_duplicates(more, "constant", d.constants);
+        d.constants.insert(d.constants.end(), more.begin(), more.end());
     } else if (h == ":predicates") {
         read_predicates(p, e, d);
     } else if (h == ":action") {
@@ -545,7 +586,7 @@ std::optional<std::string> read_define(Parser& p, const SExpr& top, std::string_
 std::optional<SExpr> read_top(std::uint32_t file, const SourceManager& sources,
                               DiagnosticSink& sink) {
     Reader r(file, sources.text(file), sink);
-    return r.read_file();
+    return r.read_file(sources);
 }
 
 } // namespace
@@ -655,7 +696,11 @@ std::optional<Problem> parse_problem(std::uint32_t file, const Domain& domain,
             Domain scratch;
             read_requirements(p, e, scratch);
         } else if (h == ":objects") {
-            pr.objects = p.typed_list(e.items, 1, false, &domain, "(:objects ...)");
+            auto more = p.typed_list(e.items, 1, false, &domain, "(:objects ...)");
+            auto earlier = domain.constants;
+            earlier.insert(earlier.end(), pr.objects.begin(), pr.objects.end());
+            p.report_duplicates(more, "object", earlier);
+            pr.objects.insert(pr.objects.end(), more.begin(), more.end());
         } else if (h == ":init") {
             for (std::size_t k = 1; k < e.items.size(); ++k) {
                 if (auto a = fr.atom(e.items[k], false)) {

@@ -5,8 +5,12 @@
 // The reader is hand-written: an s-expression lexer (`;` comments, case-insensitive names, which
 // are lowered as PDDL prescribes) and one function per construct. Every error is a located
 // Diagnostic naming the construct: unbalanced parentheses, an unknown predicate or type, a wrong
-// arity, an unsupported requirement (`:conditional-effects`) or construct (`forall`, `or`).
-// Meaning (types exist, arities agree) is checked here too, so the importer sees a sound tree.
+// arity, an unsupported requirement (`:conditional-effects`) or construct (`forall`, `or`), a
+// parameter, constant or object declared twice. Meaning (types exist, arities agree) is checked
+// here too, so the importer sees a sound tree. The text must be UTF-8 (a byte-order mark is
+// skipped; LF, CRLF and CR end lines), and parentheses nest at most kMaxNesting (256) deep, so the
+// recursive reader and the tree's destructor stay within the stack. docs/pddl-support.md lists
+// what is accepted.
 //
 //   auto d = parse_domain(file, sources, sink);          // nullopt when there were errors
 //   auto p = parse_problem(file2, *d, sources, sink);

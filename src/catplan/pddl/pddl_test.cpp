@@ -300,5 +300,155 @@ TEST(PddlSemantics, ConstantsArePinnedAndMayBeParameters) {
     EXPECT_EQ(applicable_plans(*l->import, 3), applicable_plans(*back->import, 3)) << *dom;
 }
 
+// ---- hostile input ------------------------------------------------------------------------------
+
+TEST(PddlErrors, DeepNestingIsALocatedErrorNotACrash) {
+    // 30,000 levels overflowed the stack before the limit.
+    std::string deep;
+    for (int i = 0; i < 30000; ++i) {
+        deep += "(and ";
+    }
+    deep += "(p)" + std::string(30000, ')');
+    auto l = load_text("(define (domain d) (:predicates (p))\n(:action a :parameters () "
+                       ":precondition " +
+                           deep + " :effect (p)))",
+                       "");
+    EXPECT_FALSE(l->domain);
+    EXPECT_NE(l->errors().find("domain.pddl:2:1311: error: nested deeper than 256 levels"),
+              std::string::npos)
+        << l->errors().substr(0, 300);
+    // Within the limit the same formula reads.
+    std::string ok;
+    for (int i = 0; i < 250; ++i) {
+        ok += "(and ";
+    }
+    ok += "(p)" + std::string(250, ')');
+    auto fine = load_text("(define (domain d) (:predicates (p)) (:action a :parameters () "
+                          ":precondition " +
+                              ok + " :effect (p)))",
+                          "");
+    EXPECT_TRUE(fine->domain) << fine->errors().substr(0, 300);
+}
+
+TEST(PddlErrors, DuplicateParametersObjectsAndConstantsAreLocated) {
+    auto l = load_text(R"((define (domain d) (:types t)
+  (:constants k k - t)
+  (:predicates (p ?x ?x - t))
+  (:action a :parameters (?x ?y ?x - t) :precondition (p ?x ?y) :effect (p ?y ?x))))",
+                       "");
+    EXPECT_FALSE(l->domain);
+    auto text = l->errors();
+    EXPECT_NE(text.find("domain.pddl:2:17: error: the constant 'k' is declared twice"),
+              std::string::npos)
+        << text;
+    EXPECT_NE(text.find("domain.pddl:3:22: error: the parameter '?x' is declared twice"),
+              std::string::npos)
+        << text;
+    EXPECT_NE(text.find("domain.pddl:4:33: error: the parameter '?x' is declared twice"),
+              std::string::npos)
+        << text;
+    EXPECT_NE(text.find("domain.pddl:4:27: note: first declared here"), std::string::npos);
+    auto p = load_text(R"((define (domain d) (:types t) (:constants k - t) (:predicates (p ?x - t))
+  (:action a :parameters (?x - t) :precondition (p ?x) :effect (not (p ?x)))))",
+                       R"((define (problem q) (:domain d)
+  (:objects a b a - t k - t) (:init) (:goal (and))))");
+    text = p->errors();
+    EXPECT_FALSE(p->problem);
+    EXPECT_NE(text.find("problem.pddl:2:17: error: the object 'a' is declared twice"),
+              std::string::npos)
+        << text;
+    EXPECT_NE(text.find("problem.pddl:2:23: error: the object 'k' is declared twice"),
+              std::string::npos)
+        << text;
+    EXPECT_NE(text.find("domain.pddl:1:43: note: first declared here"), std::string::npos) << text;
+}
+
+TEST(PddlParse, SkipsAByteOrderMarkAndEndsLinesAtCr) {
+    auto l = load_text("\xEF\xBB\xBF; a comment\r(define (domain d) ; another\r"
+                       "(:predicates (p)) (:action a :parameters () :precondition (p)\r"
+                       ":effect (not (p))))",
+                       "(define (problem q) (:domain d)\r(:init (p) (r))\r(:goal (p)))");
+    EXPECT_TRUE(l->domain) << l->errors();
+    EXPECT_NE(l->errors().find("problem.pddl:2:13: error: unknown predicate 'r'"),
+              std::string::npos)
+        << l->errors();
+}
+
+TEST(PddlErrors, InvalidUtf8IsAnEncodingError) {
+    auto l = load_text("(define (domain d\xFF))", "");
+    EXPECT_FALSE(l->domain);
+    EXPECT_NE(l->errors().find("domain.pddl:1:18: error: invalid UTF-8"), std::string::npos)
+        << l->errors();
+}
+
+struct PlanRead {
+    SourceManager sm;
+    DiagnosticSink sink{sm};
+    std::optional<IpcPlan> plan;
+
+    explicit PlanRead(const std::string& text) {
+        plan = parse_ipc_plan(sm.add_buffer("p.plan", text), sm, sink);
+    }
+};
+
+TEST(IpcPlanReader, AcceptsTheFormsPlannersWrite) {
+    PlanRead r("\xEF\xBB\xBF; Fast Downward\n(Unstack E D)\n0.000: (put-down e) [1]\r\n"
+               "  1.5:(pick-up c)[2.0] ; comment\r(stack c d)\n\n; cost = 4 (unit cost)\n");
+    ASSERT_TRUE(r.plan) << r.sink.render();
+    ASSERT_EQ(r.plan->size(), 4u);
+    EXPECT_EQ((*r.plan)[0].to_string(), "(unstack e d)");
+    EXPECT_EQ((*r.plan)[2].to_string(), "(pick-up c)");
+    EXPECT_EQ(r.sm.line_col(0, (*r.plan)[3].range.begin).line, 5u);
+    ASSERT_EQ((*r.plan)[0].arg_ranges.size(), 2u);
+    EXPECT_EQ(r.sm.line_col(0, (*r.plan)[0].arg_ranges[1].begin).col, 12u);
+}
+
+TEST(IpcPlanReader, RejectsEverythingElseLocated) {
+    for (auto [text, message] : std::vector<std::pair<std::string, std::string>>{
+             {"(stack a b) (teleport x y) (explode)",
+              "p.plan:1:13: error: expected one step per line, found a second '('"},
+             {"junk (stack a b)", "p.plan:1:1: error: expected a step '(action object ...)'"},
+             {"(stack a b) junk", "p.plan:1:13: error: unexpected text after the step"},
+             {"((stack a b))", "p.plan:1:2: error: expected an object name or ')' in a step, "
+                               "found '('"},
+             {"(stack a b", "p.plan:1:1: error: unbalanced parentheses"},
+             {"(stack a\nb)", "p.plan:1:1: error: unbalanced parentheses"},
+             {"()", "p.plan:1:1: error: expected an action name in '()'"},
+             {"1e999: (stack a b)", "p.plan:1:1: error: number '1e999' is out of range"},
+             {"0: (stack a b) [x]", "p.plan:1:16: error: expected a duration '[number]'"},
+             {"0 (stack a b)", "p.plan:1:1: error: expected a step '(action object ...)'"},
+             {"0: stack a b", "p.plan:1:4: error: expected a step '(action object ...)' after "
+                              "the time stamp"},
+             {"(stack a b)\xFF", "p.plan:1:12: error: invalid UTF-8"},
+         }) {
+        PlanRead r(text);
+        EXPECT_FALSE(r.plan) << text;
+        EXPECT_NE(r.sink.render().find(message), std::string::npos) << text << "\n"
+                                                                    << r.sink.render();
+    }
+    PlanRead several("(a)\n(b c) d\n(e\n");
+    EXPECT_EQ(several.sink.num_errors(), 2u) << several.sink.render();
+}
+
+TEST(IpcPlanReader, CheckReportsEveryStepThatCannotBeRightLocated) {
+    auto l = load("blocksworld-domain.pddl", "blocksworld-p01.pddl");
+    ASSERT_TRUE(l->import) << l->errors();
+    PlanRead r("(unstack e d)\n(teleport e)\n(stack a)\n(stack a zz)\n(pick-up qq)\n");
+    ASSERT_TRUE(r.plan);
+    EXPECT_FALSE(check_ipc_plan(*l->import, *r.plan, r.sink));
+    EXPECT_EQ(r.sink.num_errors(), 4u);
+    auto text = r.sink.render();
+    EXPECT_NE(text.find("p.plan:2:2: error: unknown action 'teleport' (domain blocksworld has: "
+                        "pick-up, put-down, stack, unstack)"),
+              std::string::npos)
+        << text;
+    EXPECT_NE(text.find("p.plan:3:1: error: 'stack' takes 2 arguments, got 1"), std::string::npos)
+        << text;
+    EXPECT_NE(text.find("p.plan:4:10: error: unknown object 'zz'"), std::string::npos) << text;
+    EXPECT_NE(text.find("p.plan:5:10: error: unknown object 'qq'"), std::string::npos) << text;
+    PlanRead good(read(data("blocksworld-p01.plan")));
+    EXPECT_TRUE(check_ipc_plan(*l->import, *good.plan, good.sink)) << good.sink.render();
+}
+
 } // namespace
 } // namespace catplan::pddl

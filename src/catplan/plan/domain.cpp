@@ -1,6 +1,10 @@
 #include "catplan/plan/domain.hpp"
 
+#include "catplan/base/unicode.hpp"
+
+#include <algorithm>
 #include <cctype>
+#include <charconv>
 #include <fmt/format.h>
 
 namespace catplan::plan {
@@ -42,6 +46,7 @@ public:
     std::optional<Plan> parse() {
         Plan plan;
         bool ok = true;
+        pos_ = bom_length(text_);
         while (true) {
             skip_blank(true);
             if (at_end()) {
@@ -59,7 +64,7 @@ public:
                 recover();
             }
         }
-        if (!ok) {
+        if (!ok || !ok_) {
             return std::nullopt;
         }
         return plan;
@@ -71,6 +76,8 @@ private:
                  c == '(' || c == ')' || c == '#');
     }
 
+    bool ok_ = true; // false after an error that did not stop the step
+
     bool at_end() const { return pos_ >= text_.size(); }
 
     char peek() const { return text_[pos_]; }
@@ -79,16 +86,19 @@ private:
         return SourceRange{file_, static_cast<std::uint32_t>(b), static_cast<std::uint32_t>(e)};
     }
 
-    // Skips spaces and comments; newlines too when `newlines`. Inside an argument list `#3` is an
+    // A line ends at LF, CRLF or a lone CR.
+    bool at_line_end() const { return !at_end() && (peek() == '\n' || peek() == '\r'); }
+
+    // Skips spaces and comments; line ends too when `newlines`. Inside an argument list `#3` is an
     // unnamed part, not a comment.
     void skip_blank(bool newlines, bool in_args = false) {
         while (!at_end()) {
             char c = peek();
-            if (c == ' ' || c == '\t' || c == '\r' || (newlines && c == '\n')) {
+            if (c == ' ' || c == '\t' || (newlines && at_line_end())) {
                 ++pos_;
             } else if (c == '#' && !(in_args && pos_ + 1 < text_.size() &&
                                      std::isdigit(static_cast<unsigned char>(text_[pos_ + 1])))) {
-                while (!at_end() && peek() != '\n') {
+                while (!at_end() && !at_line_end()) {
                     ++pos_;
                 }
             } else {
@@ -104,6 +114,14 @@ private:
             ++pos_;
             while (!at_end() && std::isdigit(static_cast<unsigned char>(peek()))) {
                 ++pos_;
+            }
+            std::uint32_t k = 0;
+            auto [end, ec] = std::from_chars(text_.data() + b + 1, text_.data() + pos_, k);
+            if (ec != std::errc() || k == 0) {
+                sink_.error(range(b, pos_), fmt::format("'{}' names no part: write #k with k "
+                                                        "from 1 (the k-th part)",
+                                                        text_.substr(b, pos_ - b)));
+                ok_ = false;
             }
         } else {
             while (!at_end() && is_name_char(peek())) {
@@ -139,12 +157,14 @@ private:
             } else {
                 while (true) {
                     skip_blank(true, true);
+                    std::size_t arg_begin = pos_;
                     auto arg = name();
                     if (!arg) {
                         error_here(fmt::format("expected an argument of '{}'", step.action));
                         return std::nullopt;
                     }
                     step.args.push_back(std::move(*arg));
+                    step.arg_ranges.push_back(range(arg_begin, pos_));
                     skip_blank(true);
                     if (!at_end() && peek() == ',') {
                         ++pos_;
@@ -162,7 +182,7 @@ private:
         }
         step.range = range(begin, pos_);
         skip_blank(false);
-        if (!at_end() && peek() != '\n' && peek() != ';') {
+        if (!at_end() && !at_line_end() && peek() != ';') {
             error_here(fmt::format("expected a new line or ';' after step '{}'", step.to_string()));
             return std::nullopt;
         }
@@ -171,7 +191,7 @@ private:
 
     // After an error, resumes at the next step.
     void recover() {
-        while (!at_end() && peek() != '\n' && peek() != ';') {
+        while (!at_end() && !at_line_end() && peek() != ';') {
             ++pos_;
         }
     }
@@ -186,7 +206,89 @@ private:
 
 std::optional<Plan> parse_plan(std::uint32_t file, const SourceManager& sources,
                                DiagnosticSink& sink) {
+    if (!check_utf8(sources, file, sink)) {
+        return std::nullopt;
+    }
     return PlanParser(file, sources.text(file), sink).parse();
+}
+
+namespace {
+
+// Whether some rule of the domain creates a part of `ob` (named `name`, when not empty).
+bool some_rule_creates(const Domain& domain, ObId ob, std::string_view name) {
+    for (const auto& r : domain.rules) {
+        for (Part p = 0; p < r->R.num_parts(ob); ++p) {
+            bool created =
+                std::find(r->r.components[ob.index()].begin(), r->r.components[ob.index()].end(),
+                          p) == r->r.components[ob.index()].end();
+            if (created && (name.empty() || r->R.part_name(ob, p) == name)) {
+                return true;
+            }
+        }
+    }
+    return false;
+}
+
+// What is wrong with argument i of a step of rule r, whatever the state; nullopt when nothing.
+std::optional<std::string> argument_problem(const Domain& domain, const ACSet& initial,
+                                            const Rule& r, const Step& step, std::size_t i) {
+    const auto& param = r.parameters[i];
+    const std::string& arg = step.args[i];
+    std::string_view ob_name = domain.schema->ob(param.ob).name;
+    if (arg.starts_with('#')) {
+        std::uint32_t k = 0;
+        std::from_chars(arg.data() + 1, arg.data() + arg.size(), k);
+        if (k > initial.num_parts(param.ob) && !some_rule_creates(domain, param.ob, "")) {
+            return fmt::format("argument {} ({}): '{}' names no part: there are {} {} parts and "
+                               "no action creates one",
+                               i + 1, param.name, arg, initial.num_parts(param.ob), ob_name);
+        }
+        return std::nullopt;
+    }
+    if (!initial.find_part(param.ob, arg) && !some_rule_creates(domain, param.ob, arg)) {
+        return fmt::format("argument {} ({}): no {} named '{}' in the initial state, and no "
+                           "action creates one",
+                           i + 1, param.name, ob_name, arg);
+    }
+    return std::nullopt;
+}
+
+} // namespace
+
+bool check_plan(const Plan& plan, const Domain& domain, const ACSet& initial,
+                DiagnosticSink& sink) {
+    std::size_t before = sink.num_errors();
+    for (const auto& step : plan.steps) {
+        const Rule* r = domain.find_rule(step.action);
+        SourceRange action{step.range.file, step.range.begin,
+                           step.range.begin + static_cast<std::uint32_t>(step.action.size())};
+        if (r == nullptr) {
+            std::vector<std::string> names;
+            for (const auto& rule : domain.rules) {
+                names.push_back(rule->name);
+            }
+            sink.error(action, fmt::format("unknown action '{}' (domain {} has: {})", step.action,
+                                           domain.name, fmt::join(names, ", ")));
+            continue;
+        }
+        if (step.args.size() != r->parameters.size()) {
+            std::vector<std::string> names;
+            for (const auto& p : r->parameters) {
+                names.push_back(p.name);
+            }
+            sink.error(step.range,
+                       fmt::format("{} takes {} argument{} ({}), got {}", r->name,
+                                   r->parameters.size(), r->parameters.size() == 1 ? "" : "s",
+                                   fmt::join(names, ", "), step.args.size()));
+            continue;
+        }
+        for (std::size_t i = 0; i < step.args.size(); ++i) {
+            if (auto why = argument_problem(domain, initial, *r, step, i)) {
+                sink.error(i < step.arg_ranges.size() ? step.arg_ranges[i] : step.range, *why);
+            }
+        }
+    }
+    return sink.num_errors() == before;
 }
 
 } // namespace catplan::plan

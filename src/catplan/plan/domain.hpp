@@ -50,6 +50,7 @@ struct Step {
     std::string action;
     std::vector<std::string> args;
     SourceRange range; // where the step was written (invalid for a step made by the planner)
+    std::vector<SourceRange> arg_ranges = {}; // where each argument was written (or empty)
 
     /// "unstack(E, D)".
     std::string to_string() const;
@@ -62,9 +63,18 @@ struct Plan {
     std::string to_string() const;
 };
 
-/// Parses a plan: steps `name(arg, ...)` (or `name` with no arguments) separated by newlines or
-/// `;`, `#` comments; every syntax error is reported to sink; nullopt when there was one.
+/// Parses a plan: steps `name(arg, ...)` (or `name` with no arguments) separated by line ends
+/// (LF, CRLF, CR) or `;`, `#` comments; an argument is a part name or `#k` (k >= 1: the k-th part
+/// of the parameter's object). The text must be UTF-8 (a byte-order mark is skipped). Every syntax
+/// error is reported to sink; nullopt when there was one.
 std::optional<Plan> parse_plan(std::uint32_t file, const SourceManager& sources,
                                DiagnosticSink& sink);
+
+/// Reports, located, what makes a parsed plan wrong whatever the states it meets: an unknown
+/// action, a wrong number of arguments, an argument naming a part that neither `initial` has nor
+/// any rule of the domain creates (of the parameter's object), or `#k` beyond the parts of an
+/// object no rule creates. Returns whether there was none. A plan that passes may still not apply:
+/// that is validation's answer, not bad input.
+bool check_plan(const Plan& plan, const Domain& domain, const ACSet& initial, DiagnosticSink& sink);
 
 } // namespace catplan::plan

@@ -97,6 +97,7 @@ public:
         return true;
     }
 
+    // nlohmann refuses a number that overflows (1e999) as a parse error.
     bool number_float(double f, const std::string& /*raw*/) {
         Node n;
         n.kind = Node::Kind::Float;
@@ -206,6 +207,12 @@ private:
     }
 
     bool open(Node::Kind kind) {
+        if (stack_.size() >= kMaxNesting) {
+            // Deeper input is refused so that the tree's destructor and readers stay shallow.
+            std::uint32_t end = offset();
+            sink_.error({file_, end > 0 ? end - 1 : 0, end}, "nested deeper than 256 levels");
+            return false;
+        }
         Node n;
         n.kind = kind;
         std::uint32_t end = offset();

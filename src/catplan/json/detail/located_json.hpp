@@ -42,7 +42,10 @@ struct Node {
     std::string describe() const;
 };
 
-/// Parses JSON text registered as `file`; nullopt after reporting a located syntax error to sink.
+/// Parses JSON text registered as `file`; nullopt after reporting a located syntax error (which
+/// includes a number out of range, 1e999), or nesting deeper than kMaxNesting (source.hpp), to
+/// sink. Duplicate keys are reported too, but the tree is still returned, so that a reader can
+/// report its own errors in the same run.
 std::optional<Node> parse_located(std::uint32_t file, const SourceManager& sources,
                                   DiagnosticSink& sink);
 

@@ -1,0 +1,1 @@
+﻿# A byte-order mark, then lines ended by a lone CR (an old Mac file).@present S(FreeSchema) begin  X::Ob  f::Hom(X, Y)end

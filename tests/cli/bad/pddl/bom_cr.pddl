@@ -1,0 +1,1 @@
+﻿; A byte-order mark and CR line ends; an unknown predicate on line 4.(define (domain crs)  (:predicates (p))  (:action a :parameters () :precondition (q) :effect (p)))

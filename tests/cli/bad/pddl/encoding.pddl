@@ -1,0 +1,3 @@
+; A byte that is not UTF-8 (0xFF) in a name.
+(define (domain badÿ)
+  (:predicates (p)))

@@ -1,0 +1,2 @@
+check -
+stdin: tests/cli/bad/lang/stdin.cp

@@ -1,0 +1,1 @@
+pddl import tests/cli/bad/pddl/encoding.pddl
