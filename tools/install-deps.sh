@@ -3,6 +3,8 @@
 # Runs apt-get as root, or through sudo for a user who is not root.
 #   tools/install-deps.sh         what `make test`, `make demo` and `make bench` need
 #   tools/install-deps.sh fuzz    that and clang with libFuzzer, for the fuzz preset (docs/fuzzing.md)
+#   tools/install-deps.sh tidy    that and clang-tidy (tools/tidy.sh)
+#   tools/install-deps.sh coverage that and gcovr (tools/coverage.sh)
 set -eu
 
 PACKAGES="g++ cmake ninja-build make python3 pkg-config clang-format
@@ -10,10 +12,13 @@ libgtest-dev libgmock-dev libbenchmark-dev libcli11-dev nlohmann-json3-dev libfm
 libsqlite3-dev libicu-dev graphviz libgraphviz-dev chromium"
 # The database layer: PostgreSQL's client library, and its server for the tests.
 PACKAGES="$PACKAGES libpq-dev postgresql"
-if [ "${1:-}" = "fuzz" ]; then
-    # clang, and compiler-rt's libFuzzer and sanitizer runtimes (libclang_rt.fuzzer).
-    PACKAGES="$PACKAGES clang libclang-rt-dev"
-fi
+# Optional groups: `fuzz` (clang, and compiler-rt's libFuzzer and sanitizer runtimes), `tidy` for
+# tools/tidy.sh, `coverage` for tools/coverage.sh.
+case "${1:-}" in
+fuzz) PACKAGES="$PACKAGES clang libclang-rt-dev" ;;
+tidy) PACKAGES="$PACKAGES clang-tidy" ;;
+coverage) PACKAGES="$PACKAGES gcovr" ;;
+esac
 
 missing=""
 for p in $PACKAGES; do

@@ -544,14 +544,14 @@ std::string schema_to_dot(const Schema& s, const DotOptions& o) {
         // A name no generator has, so the note cannot collide with an object's node.
         std::string id = "equations";
         while (s.find(id)) {
-            id = "_" + id;
+            id.insert(0, "_");
         }
         std::string label;
         for (const auto& eq : s.equations()) {
             std::string text =
                 fmt::format("{} = {}", s.path_to_string(eq.lhs), s.path_to_string(eq.rhs));
             if (!eq.name.empty()) {
-                text = eq.name + ": " + text;
+                text = fmt::format("{}: {}", eq.name, text);
             }
             label += escape_quoted(text) + "\\l"; // \l: left-justified lines
         }

@@ -466,7 +466,7 @@ private:
 
 } // namespace
 
-std::optional<ACSet> read_acset(schema::SchemaPtr schema, std::uint32_t file,
+std::optional<ACSet> read_acset(const schema::SchemaPtr& schema, std::uint32_t file,
                                 const SourceManager& sources, DiagnosticSink& sink) {
     CATPLAN_ASSERT(schema != nullptr, "read_acset needs a schema");
     std::size_t errors_before = sink.num_errors();

@@ -53,7 +53,7 @@ std::string write_schema(const schema::Schema& s, bool pretty = false);
 /// errors (all reported to sink). An attribute type of kind Unknown takes the kind of its first
 /// concrete value (Int widened to Float when a float appears too); the returned state is then on
 /// an adjusted copy of the schema. JSON integers are accepted for Float attributes.
-std::optional<acset::ACSet> read_acset(schema::SchemaPtr schema, std::uint32_t file,
+std::optional<acset::ACSet> read_acset(const schema::SchemaPtr& schema, std::uint32_t file,
                                        const SourceManager& sources, DiagnosticSink& sink);
 
 /// Reads a schema (named `name`) from JSON text registered as `file`; nullptr on errors (all

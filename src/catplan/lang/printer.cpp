@@ -190,7 +190,7 @@ std::string print_instance(const ACSet& x, std::string_view name) {
     auto pick = [&](std::string_view wanted, std::string fallback) {
         std::string n(wanted);
         if (!is_identifier(n) || used.count(n)) {
-            n = fallback;
+            n = std::move(fallback);
             while (used.count(n)) {
                 n += "_";
             }

@@ -90,9 +90,10 @@ TEST(DescribeMap, AttributesOfAQueryAreTermsOfItsVariables) {
     for (const auto& l : describe_map(f)) {
         lines.push_back(l.name + " ⇒ " + l.image);
     }
+    const std::string stacked_line =
+        "Stacked ⇒ {#1::Block, o::On, C::Color | hasColor(#1) == C, on_r(o) == #1}";
     EXPECT_EQ(lines, (std::vector<std::string>{
-                         "Stacked ⇒ {#1::Block, o::On, C::Color | hasColor(#1) == C, "
-                         "on_r(o) == #1}",
+                         stacked_line,
                          "World ⇒ @unit",
                          "inWorld ⇒ (the unique map into @unit)",
                          "Shade ⇒ Color",

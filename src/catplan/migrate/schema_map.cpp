@@ -3,6 +3,7 @@
 #include "catplan/base/assert.hpp"
 #include "catplan/hom/hom_search.hpp"
 
+#include <fmt/format.h>
 #include <utility>
 
 namespace catplan::migrate {
@@ -262,8 +263,8 @@ void SchemaMap::compile_hom(HomId f, std::vector<MapProblem>& out) {
                 n.is_value ? "'" + source_->attr_type(n.type).name + "'" : ob_name(*source_, n.ob);
             out.push_back({Severity::Error, MapProblemKind::WrongEnds, g,
                            terms[i].range.valid() ? terms[i].range : e.range,
-                           what + ": variable '" + n.name + "' of " + want +
-                               " is sent to a term of another type"});
+                           fmt::format("{}: variable '{}' of {} is sent to a term of another type",
+                                       what, n.name, want)});
             bad = true;
             continue;
         }
