@@ -8,6 +8,7 @@
 #include <random>
 #include <sys/stat.h>
 #include <unistd.h>
+#include <utility>
 
 namespace catplan {
 namespace {
@@ -48,7 +49,10 @@ bool resolve_links(std::string& path, std::string& error) {
             return false;
         }
         target.resize(static_cast<std::size_t>(n));
-        path = target.front() == '/' ? target : directory_of(path) + target;
+        if (target.front() != '/') {
+            target.insert(0, directory_of(path));
+        }
+        path = std::move(target);
     }
     errno = ELOOP;
     error = why("cannot follow the link", path);
