@@ -1,8 +1,9 @@
 # The two commands of the README. Both install what is missing (tools/install-deps.sh) and build
 # what is needed; the CMake presets hold the build settings.
-.PHONY: all deps demo test build release bench format check-format check-layers clean
+.PHONY: all deps demo test build release bench format check-format check-layers clean install
 
 JOBS ?= 2
+PREFIX ?= /usr/local
 
 all: release
 
@@ -24,6 +25,10 @@ test: build
 # The main job: the paper's case study, printed readably.
 demo: release
 	@./tools/demo.sh build/release/src/catplan/cli/catplan
+
+# The C++ library, its headers and CMake package (find_package(catplan)), and the catplan command.
+install: release
+	cmake --install build/release --prefix $(PREFIX)
 
 bench: deps
 	cmake --preset release >/dev/null
