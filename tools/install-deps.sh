@@ -14,6 +14,8 @@ if [ "${1:-}" = "fuzz" ]; then
     # clang, and compiler-rt's libFuzzer and sanitizer runtimes (libclang_rt.fuzzer).
     PACKAGES="$PACKAGES clang libclang-rt-dev"
 fi
+# The Python package (pybind11, Debian's python3 with venv and pip; pytest, numpy for tables).
+PACKAGES="$PACKAGES pybind11-dev python3-dev python3-pytest python3-numpy python3-venv python3-pip python3-setuptools python3-wheel"
 
 missing=""
 for p in $PACKAGES; do
