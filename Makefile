@@ -36,8 +36,11 @@ python: deps
 	$(VENV)/bin/pip install --no-build-isolation --no-index --no-deps .
 	@echo "catplan is installed in $(VENV): $(VENV)/bin/python -c 'import catplan'"
 
-# The C++ library, its headers and CMake package (find_package(catplan)), and the catplan command.
-install: release
+# The C++ library, its headers and CMake package (find_package(catplan)), the catplan command,
+# its man page and its bash completion.
+install: deps
+	cmake --preset release >/dev/null
+	cmake --build --preset release -j $(JOBS) --target catplan catplan_cli_docs
 	cmake --install build/release --prefix $(PREFIX)
 
 bench: deps

@@ -16,6 +16,8 @@ if [ "${1:-}" = "fuzz" ]; then
 fi
 # The Python package (pybind11, Debian's python3 with venv and pip; pytest, numpy for tables).
 PACKAGES="$PACKAGES pybind11-dev python3-dev python3-pytest python3-numpy python3-venv python3-pip python3-setuptools python3-wheel"
+# The man page (help2man, rendered by man-db in its test) and the bash completion.
+PACKAGES="$PACKAGES help2man man-db bash-completion"
 
 missing=""
 for p in $PACKAGES; do
