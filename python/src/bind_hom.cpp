@@ -220,19 +220,19 @@ infinite (a variable of x that no attribute uses).)doc");
         py::arg("x"), py::arg("y"), py::kw_only(), py::arg("monic") = false, py::arg("iso") = false,
         py::arg("initial") = py::none(),
         "The number of homomorphisms x -> y, without keeping them.");
-    m.def(
-        "is_isomorphic",
-        [](PyState& xs, PyState& ys) {
-            auto x = xs.share();
-            auto y = ys.share();
-            require_same_schema(*x, *y);
-            py::gil_scoped_release release;
-            return hom::is_isomorphic(*x, *y);
-        },
-        py::arg("x"), py::arg("y"), "Whether x and y are isomorphic (names ignored).");
+    m.def("is_isomorphic", &isomorphic, py::arg("x"), py::arg("y"),
+          "Whether x and y are isomorphic (names ignored).");
 }
 
 } // namespace
+
+bool isomorphic(PyState& xs, PyState& ys) {
+    auto x = xs.share();
+    auto y = ys.share();
+    require_same_schema(*x, *y);
+    py::gil_scoped_release release;
+    return hom::is_isomorphic(*x, *y);
+}
 
 void bind_hom(py::module_& m) {
     bind_morphism(m);

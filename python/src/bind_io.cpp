@@ -135,11 +135,7 @@ PyIpcValidation validate_ipc(const PyPddl& t, const py::handle& plan) {
 
 std::string to_ipc(const PyPddl& t, const py::handle& plan) {
     auto p = plan_arg(plan);
-    auto r = pddl::to_ipc_plan(*t.im, p);
-    if (!r) {
-        throw error_from(r.error());
-    }
-    return pddl::write_ipc_plan(*r);
+    return pddl::write_ipc_plan(value_or_raise(pddl::to_ipc_plan(*t.im, p)));
 }
 
 } // namespace
@@ -211,24 +207,12 @@ and written back.)doc")
         "Reads an IPC plan ('(unstack e d)' per line) into (action, [args]) tuples.");
     m.def(
         "export_pddl",
-        [](const PyDomain& d) {
-            auto r = pddl::export_domain(*d.ptr);
-            if (!r) {
-                throw error_from(r.error());
-            }
-            return *r;
-        },
+        [](const PyDomain& d) { return value_or_raise(pddl::export_domain(*d.ptr)); },
         py::arg("domain"),
         "The domain as a PDDL domain file; raises CatplanError when PDDL cannot express it.");
     m.def(
         "export_pddl_problem",
-        [](const PyProblem& p) {
-            auto r = pddl::export_problem(*p.ptr);
-            if (!r) {
-                throw error_from(r.error());
-            }
-            return *r;
-        },
+        [](const PyProblem& p) { return value_or_raise(pddl::export_problem(*p.ptr)); },
         py::arg("problem"), "The problem as a PDDL problem file.");
 }
 

@@ -43,10 +43,7 @@ PyState sigma(const PyMap& f, PyState& state, std::size_t max_parts) {
         py::gil_scoped_release release;
         x.emplace(migrate::sigma(*f.ptr, *y, max_parts));
     }
-    if (!*x) {
-        throw error_from(x->error());
-    }
-    return PyState::owned(std::move(x->value()), state.name());
+    return PyState::owned(value_or_raise(std::move(*x)), state.name());
 }
 
 PyDomain migrate_domain(const PyMap& f, const PyDomain& d, const std::string& name,
@@ -72,11 +69,8 @@ PyDomain migrate_domain(const PyMap& f, const PyDomain& d, const std::string& na
 }
 
 PyMap compose(const PyMap& first, const PyMap& second, const std::string& name) {
-    auto r = migrate::compose(*first.ptr, *second.ptr);
-    if (!r) {
-        throw error_from(r.error());
-    }
-    return PyMap{std::make_shared<const migrate::SchemaMap>(std::move(r.value())),
+    return PyMap{std::make_shared<const migrate::SchemaMap>(
+                     value_or_raise(migrate::compose(*first.ptr, *second.ptr))),
                  name.empty() ? second.name + "∘" + first.name : name};
 }
 

@@ -64,8 +64,18 @@ py::dict of_kind(const PyModule& m, lang::DeclKind k) {
     return out;
 }
 
-PyModule finish_load(std::shared_ptr<SourceManager> sources, DiagnosticSink& sink,
-                     lang::Module module) {
+/// Runs one of lang's loaders without the GIL; CatplanError with every diagnostic on errors.
+template <class Loader>
+PyModule load_with(std::size_t max_fresh_parts, const Loader& loader) {
+    auto sources = std::make_shared<SourceManager>();
+    DiagnosticSink sink(*sources);
+    lang::LoadOptions options;
+    options.max_fresh_parts = max_fresh_parts;
+    lang::Module module;
+    {
+        py::gil_scoped_release release;
+        module = loader(*sources, sink, options);
+    }
     if (sink.has_errors()) {
         throw error_from(*sources, sink);
     }
@@ -74,29 +84,17 @@ PyModule finish_load(std::shared_ptr<SourceManager> sources, DiagnosticSink& sin
 }
 
 PyModule load(const std::string& path, std::size_t max_fresh_parts) {
-    auto sources = std::make_shared<SourceManager>();
-    DiagnosticSink sink(*sources);
-    lang::LoadOptions options;
-    options.max_fresh_parts = max_fresh_parts;
-    lang::Module module;
-    {
-        py::gil_scoped_release release;
-        module = lang::load_file(path, *sources, sink, options);
-    }
-    return finish_load(std::move(sources), sink, std::move(module));
+    return load_with(max_fresh_parts, [&](SourceManager& sources, DiagnosticSink& sink,
+                                          const lang::LoadOptions& options) {
+        return lang::load_file(path, sources, sink, options);
+    });
 }
 
 PyModule loads(const std::string& text, const std::string& name, std::size_t max_fresh_parts) {
-    auto sources = std::make_shared<SourceManager>();
-    DiagnosticSink sink(*sources);
-    lang::LoadOptions options;
-    options.max_fresh_parts = max_fresh_parts;
-    lang::Module module;
-    {
-        py::gil_scoped_release release;
-        module = lang::load_source(name, text, *sources, sink, options);
-    }
-    return finish_load(std::move(sources), sink, std::move(module));
+    return load_with(max_fresh_parts, [&](SourceManager& sources, DiagnosticSink& sink,
+                                          const lang::LoadOptions& options) {
+        return lang::load_source(name, text, sources, sink, options);
+    });
 }
 
 const lang::Declaration& declaration(const PyModule& m, const std::string& name) {

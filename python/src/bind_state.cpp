@@ -3,7 +3,6 @@
 
 #include "catplan/acset/printer.hpp"
 #include "catplan/dot/dot.hpp"
-#include "catplan/hom/isomorphism.hpp"
 #include "catplan/json/json.hpp"
 #include "catplan/lang/module.hpp"
 
@@ -445,16 +444,8 @@ void bind_output(py::class_<PyState>& c) {
         .def(
             "__eq__", [](const PyState& a, const PyState& b) { return a.get() == b.get(); },
             "Exact equality of parts, columns and variables (names are ignored).")
-        .def(
-            "is_isomorphic",
-            [](PyState& a, PyState& b) {
-                auto x = a.share();
-                auto y = b.share();
-                require_same_schema(*x, *y);
-                py::gil_scoped_release release;
-                return hom::is_isomorphic(*x, *y);
-            },
-            py::arg("other"), "Whether the states are isomorphic (names ignored).");
+        .def("is_isomorphic", &isomorphic, py::arg("other"),
+             "Whether the states are isomorphic (names ignored).");
 }
 
 } // namespace

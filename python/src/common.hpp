@@ -7,6 +7,7 @@
 
 #include "catplan/acset/acset.hpp"
 #include "catplan/base/diagnostic.hpp"
+#include "catplan/base/result.hpp"
 #include "catplan/base/source.hpp"
 #include "catplan/hom/morphism.hpp"
 #include "catplan/migrate/schema_map.hpp"
@@ -116,6 +117,9 @@ Part part_arg(const acset::ACSet& x, ObId ob, const py::handle& part);
 /// ValueError unless x and y are on the same schema (or schemas of the same shape).
 void require_same_schema(const acset::ACSet& x, const acset::ACSet& y);
 
+/// Whether x and y are isomorphic (names ignored), computed without the GIL.
+bool isomorphic(PyState& x, PyState& y);
+
 // ---- values -----------------------------------------------------------------------------------
 
 /// The Python value of an attribute cell: bool, int, float, str, Var, or None (unset).
@@ -158,6 +162,15 @@ CatplanError error_from(const SourceManager& sources, const DiagnosticSink& sink
 /// A CatplanError with one unlocated diagnostic (an algorithm's failure to produce a value that
 /// the caller asked for, such as a rule that does not migrate).
 CatplanError error_from(std::string message);
+
+/// The value of a library Result, or a CatplanError with its reason.
+template <class T>
+T value_or_raise(Result<T> r) {
+    if (!r) {
+        throw error_from(r.error());
+    }
+    return std::move(r).value();
+}
 
 /// Registers catplan.CatplanError and its translation.
 void register_errors(py::module_& m);

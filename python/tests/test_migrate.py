@@ -1,6 +1,7 @@
 """Ontology maps and data migration: Δ (the paper's Table 1), Σ, the generated actions."""
 
 import os
+import shutil
 import subprocess
 
 import pytest
@@ -30,9 +31,10 @@ def test_migrating_the_initial_state_gives_table_1(case_study):
 
 
 def test_the_command_line_prints_the_same_tables(case_study, source_dir):
-    binary = os.environ.get("CATPLAN_BINARY")
+    # The ctest names the command just built; elsewhere, the one on PATH.
+    binary = os.environ.get("CATPLAN_BINARY") or shutil.which("catplan")
     if not binary:
-        pytest.fail("CATPLAN_BINARY is not set (the ctest sets it)")
+        pytest.skip("no catplan command: set CATPLAN_BINARY or put catplan on PATH")
     out = subprocess.run(
         [binary, "migrate", "examples/colorblocks_to_kitchen/appendix_map.cp", "--map",
          "ColorToKitchen", "Initial"], cwd=source_dir, capture_output=True, text=True,
