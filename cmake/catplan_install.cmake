@@ -19,15 +19,31 @@ set(CATPLAN_INSTALL_CMAKEDIR ${CMAKE_INSTALL_LIBDIR}/cmake/catplan)
 get_property(catplan_layers GLOBAL PROPERTY CATPLAN_LAYERS)
 list(REMOVE_ITEM catplan_layers cli)
 set(catplan_layer_targets "")
-# Dependencies the package must find again: fmt and nlohmann_json are linked publicly; libgvc
-# (through pkg-config) privately by the report layer, which a static library still needs.
-set(CATPLAN_NEEDS_GVC OFF)
+# What the package must find again for the imported targets the layers link (publicly, or
+# privately, which a static library still needs at link time): a table, so that a new one is
+# an error here rather than a package that fails in a consumer.
+set(CATPLAN_FIND_fmt::fmt "find_dependency(fmt)")
+set(CATPLAN_FIND_nlohmann_json::nlohmann_json "find_dependency(nlohmann_json)")
+set(CATPLAN_FIND_SQLite::SQLite3 "find_dependency(SQLite3)")
+set(CATPLAN_FIND_PkgConfig::CATPLAN_GVC "catplan_find_pkg(CATPLAN_GVC libgvc libgraphviz-dev)")
+set(CATPLAN_FIND_PkgConfig::CATPLAN_LIBPQ "catplan_find_pkg(CATPLAN_LIBPQ libpq libpq-dev)")
+set(CATPLAN_FIND_DEPENDENCIES "")
 foreach(layer ${catplan_layers})
     list(APPEND catplan_layer_targets catplan_${layer})
     get_target_property(links catplan_${layer} LINK_LIBRARIES)
-    if(links AND "PkgConfig::CATPLAN_GVC" IN_LIST links)
-        set(CATPLAN_NEEDS_GVC ON)
-    endif()
+    foreach(lib ${links})
+        if(lib MATCHES "^catplan::" OR NOT lib MATCHES "::")
+            continue()
+        endif()
+        if(NOT DEFINED CATPLAN_FIND_${lib})
+            message(FATAL_ERROR "layer ${layer} links ${lib}: say in ${CMAKE_CURRENT_LIST_FILE} "
+                "how catplanConfig.cmake finds it")
+        endif()
+        string(FIND "${CATPLAN_FIND_DEPENDENCIES}" "${CATPLAN_FIND_${lib}}" at)
+        if(at EQUAL -1)
+            string(APPEND CATPLAN_FIND_DEPENDENCIES "${CATPLAN_FIND_${lib}}\n")
+        endif()
+    endforeach()
 endforeach()
 
 add_library(catplan_all INTERFACE)

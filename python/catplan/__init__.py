@@ -21,9 +21,12 @@ from typing import Any, Dict
 
 from ._catplan import (
     CatplanError,
+    Claim,
     Diagnostic,
     Domain,
+    Fault,
     GoalSatisfaction,
+    Hypothesis,
     IpcValidation,
     Map,
     Module,
@@ -41,6 +44,7 @@ from ._catplan import (
     TransferStep,
     Validation,
     Var,
+    Verdict,
     compose,
     count_homs,
     export_pddl,
@@ -64,9 +68,10 @@ from ._catplan import (
 __version__ = "0.1.0"
 
 __all__ = [
-    "CatplanError", "Diagnostic", "Domain", "GoalSatisfaction", "IpcValidation", "Map",
+    "CatplanError", "Claim", "Diagnostic", "Domain", "Fault", "GoalSatisfaction", "Hypothesis",
+    "IpcValidation", "Map",
     "Module", "Morphism", "PddlTask", "Plan", "Problem", "Replan", "Rule", "Schema",
-    "SearchResult", "State", "Step", "Transfer", "TransferStep", "Validation", "Var",
+    "SearchResult", "State", "Step", "Transfer", "TransferStep", "Validation", "Var", "Verdict",
     "compose", "count_homs", "export_pddl", "export_pddl_problem", "hom", "homs",
     "is_isomorphic", "load", "load_pddl", "loads", "loads_pddl", "migrate", "migrate_domain",
     "parse_ipc_plan", "plan", "sigma", "to_tables", "transfer", "validate",

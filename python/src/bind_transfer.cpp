@@ -103,9 +103,17 @@ PyReplan replan_of(const transfer::Replan& rp) {
                     rp.edit_distance};
 }
 
+/// A goal for the map's target schema (ValueError for a state on another one).
+std::shared_ptr<const acset::ACSet> intended_goal(const PyMap& map, PyState& goal) {
+    if (goal.get().schema_ptr() != map.ptr->target()) {
+        throw py::value_error("the intended goal is on " + goal.get().schema().name() +
+                              ", not on the map's target schema " + map.ptr->target()->name());
+    }
+    return goal.share();
+}
+
 PyTransfer run_transfer(const PyMap& map, const PyProblem& problem, const py::handle& plan_obj,
-                        bool rename_by_type, bool keep_states, bool replan,
-                        const SearchArgs& search) {
+                        const transfer::TransferOptions& o, bool replan, const SearchArgs& search) {
     if (map.ptr->source() != problem.ptr->domain->schema) {
         throw py::value_error("map " + map.name + " goes from " + map.ptr->target()->name() +
                               " to " + map.ptr->source()->name() + ", but problem " +
@@ -114,9 +122,6 @@ PyTransfer run_transfer(const PyMap& map, const PyProblem& problem, const py::ha
     PyTransfer r{nullptr, nullptr, map, problem, plan_arg(plan_obj), 0};
     Interruptible inter;
     auto options = search_options(search, inter);
-    transfer::TransferOptions o;
-    o.keep_states = keep_states;
-    o.rename_by_type = rename_by_type;
     auto t = std::make_shared<transfer::TransferResult>(
         transfer::transfer_plan(*map.ptr, *problem.ptr, r.plan, o));
     r.transfer_peak_kib = transfer::peak_rss_kib();
@@ -145,7 +150,119 @@ std::string report_html(const PyTransfer& r, bool no_timing) {
     return report::html_report(in);
 }
 
+/// The verdict of a transfer, kept alive by the result it belongs to.
+struct VerdictRef {
+    std::shared_ptr<const transfer::TransferResult> t;
+
+    const transfer::Verdict& get() const { return t->verdict; }
+};
+
+std::string_view fault_kind(transfer::Fault::Kind k) {
+    using K = transfer::Fault::Kind;
+    switch (k) {
+    case K::SourcePlan:
+        return "source_plan";
+    case K::Step:
+        return "step";
+    case K::Goal:
+        return "goal";
+    case K::IntendedGoal:
+        return "intended_goal";
+    }
+    return "step";
+}
+
+std::string_view claim_kind(transfer::Claim::Kind k) {
+    switch (k) {
+    case transfer::Claim::Kind::ValidByConstruction:
+        return "valid_by_construction";
+    }
+    return "valid_by_construction";
+}
+
+const transfer::Claim& claim_named(const transfer::Verdict& v, const std::string& kind) {
+    for (const auto& c : v.claims) {
+        if (claim_kind(c.kind) == kind) {
+            return c;
+        }
+    }
+    throw py::key_error("no claim '" + kind + "' (the claims: valid_by_construction)");
+}
+
+void bind_verdict(py::module_& m) {
+    py::class_<transfer::Fault>(m, "Fault", R"doc(
+One thing that makes a transfer invalid. kind is 'source_plan' (the source plan is invalid on
+its problem), 'step' (a source step applies but its migration does not), 'goal' (Δ_F(G) does
+not embed monically in the last target state) or 'intended_goal' (the goal intended in the
+target domain is not fully satisfied).)doc")
+        .def_property_readonly(
+            "kind", [](const transfer::Fault& f) { return std::string(fault_kind(f.kind)); })
+        .def_readonly("step", &transfer::Fault::step, "The step (0-based) it is about, or None.")
+        .def_readonly("where", &transfer::Fault::where, "'step 3 pickup(B)', or ''.")
+        .def_readonly("why", &transfer::Fault::why, "What is wrong, without the step.")
+        .def("__str__", &transfer::Fault::to_string)
+        .def("__repr__", [](const transfer::Fault& f) { return "<Fault " + f.to_string() + ">"; });
+
+    py::class_<transfer::Hypothesis>(m, "Hypothesis",
+                                     "A hypothesis of a theorem, and whether it "
+                                     "holds for this transfer.")
+        .def_readonly("statement", &transfer::Hypothesis::statement)
+        .def_readonly("holds", &transfer::Hypothesis::holds);
+
+    py::class_<transfer::Claim>(m, "Claim", R"doc(
+A guarantee a transfer can give, claimed only when every hypothesis of its theorem holds.
+'valid_by_construction': every migrated step applies and Y_i = Δ_F(X_i) without search (the
+paper's Appendix A).)doc")
+        .def_property_readonly(
+            "kind", [](const transfer::Claim& c) { return std::string(claim_kind(c.kind)); })
+        .def_readonly("hypotheses", &transfer::Claim::hypotheses)
+        .def_property_readonly("holds", &transfer::Claim::holds)
+        .def_property_readonly(
+            "failing",
+            [](const transfer::Claim& c) -> std::optional<transfer::Hypothesis> {
+                const auto* h = c.failing();
+                return h == nullptr ? std::nullopt : std::optional<transfer::Hypothesis>(*h);
+            },
+            "The first hypothesis that does not hold, or None.");
+
+    py::class_<VerdictRef>(m, "Verdict", R"doc(
+A transfer's verdict: valid or not, every fault in the order the transfer met them (the first
+is the reason), the goal it is judged by (the intended goal when one was given, else Δ_F(G))
+with the paper's Metric 1, and the claims with their hypotheses.)doc")
+        .def_property_readonly("valid", [](const VerdictRef& v) { return v.get().valid(); })
+        .def_property_readonly(
+            "status", [](const VerdictRef& v) { return v.get().valid() ? "valid" : "invalid"; })
+        .def_property_readonly(
+            "reason", [](const VerdictRef& v) { return v.get().reason(); },
+            "Why the transfer is invalid, in one sentence ('' when valid).")
+        .def_property_readonly("faults", [](const VerdictRef& v) { return v.get().faults; })
+        .def_property_readonly("goal", [](const VerdictRef& v) { return v.get().goal; })
+        .def_property_readonly(
+            "goal_name", [](const VerdictRef& v) { return v.get().goal_name; },
+            "The intended goal's name ('' when judged by Δ_F(G)).")
+        .def_property_readonly("claims", [](const VerdictRef& v) { return v.get().claims; })
+        .def_property_readonly(
+            "failed_step",
+            [](const VerdictRef& v) -> std::optional<transfer::Fault> {
+                const auto* f = v.get().failed_step();
+                return f == nullptr ? std::nullopt : std::optional<transfer::Fault>(*f);
+            },
+            "The fault at the step the replay stopped at (source or target), or None.")
+        .def_property_readonly("source_valid",
+                               [](const VerdictRef& v) { return v.get().source_valid(); })
+        .def(
+            "claim",
+            [](const VerdictRef& v, const std::string& kind) { return claim_named(v.get(), kind); },
+            py::arg("kind"), "The claim of a kind ('valid_by_construction').")
+        .def("__bool__", [](const VerdictRef& v) { return v.get().valid(); })
+        .def("__repr__", [](const VerdictRef& v) {
+            return v.get().valid() ? std::string("<Verdict valid>")
+                                   : "<Verdict invalid: " + v.get().reason() + ">";
+        });
+}
+
 void bind_results(py::module_& m) {
+    bind_verdict(m);
     py::class_<transfer::GoalSatisfaction>(m, "GoalSatisfaction", R"doc(
 The paper's Metric 1: the largest fraction of the goal's statements (each part, hom value and
 concrete attribute value) that one injective assignment satisfies, with the statements it
@@ -193,29 +310,17 @@ void bind_transfer_result(py::module_& m) {
     py::class_<PyTransfer>(m, "Transfer", "The outcome of a plan transfer along an ontology map.")
         .def_property_readonly("steps", &steps)
         .def_property_readonly(
-            "valid", [](const PyTransfer& r) { return r.t->valid; },
-            "Every step transferred and the goal reached.")
+            "verdict", [](const PyTransfer& r) { return VerdictRef{r.t}; },
+            "Valid or not and why, every fault, the goal judged by, the claims.")
         .def_property_readonly(
-            "reason", [](const PyTransfer& r) { return r.t->reason; },
-            "Why the transfer is invalid ('' when valid).")
-        .def_property_readonly("goal_reached",
-                               [](const PyTransfer& r) { return r.t->goal_reached; })
+            "valid", [](const PyTransfer& r) { return r.t->verdict.valid(); },
+            "verdict.valid: every step transferred and the goal met.")
         .def_property_readonly(
-            "goal", [](const PyTransfer& r) { return r.t->goal; },
-            "Goal satisfaction (GoalSatisfaction) on the last target state.")
+            "reason", [](const PyTransfer& r) { return r.t->verdict.reason(); },
+            "verdict.reason: why the transfer is invalid ('' when valid).")
         .def_property_readonly(
-            "failed_step",
-            [](const PyTransfer& r) -> py::object {
-                if (!r.t->failed_step) {
-                    return py::none();
-                }
-                return py::make_tuple(r.t->failed_step->index, r.t->failed_step->reason);
-            },
-            "(index, reason) of the step that could not be transferred, or None.")
-        .def_property_readonly("source_valid",
-                               [](const PyTransfer& r) { return r.t->source_valid; })
-        .def_property_readonly("source_reason",
-                               [](const PyTransfer& r) { return r.t->source_reason; })
+            "goal", [](const PyTransfer& r) { return r.t->verdict.goal; },
+            "verdict.goal: goal satisfaction on the last target state reached.")
         .def_property_readonly(
             "migration",
             [](const PyTransfer& r) { return std::string(transfer::to_string(r.t->migration)); },
@@ -274,30 +379,41 @@ void bind_transfer_result(py::module_& m) {
         .def("report", &report_html, py::kw_only(), py::arg("no_timing") = false,
              "The HTML report of the transfer: one self-contained page (pictures of the states "
              "need keep_states=True).")
-        .def("__bool__", [](const PyTransfer& r) { return r.t->valid; })
+        .def("__bool__", [](const PyTransfer& r) { return r.t->verdict.valid(); })
         .def("__repr__", [](const PyTransfer& r) {
             return "<Transfer " + r.map.name + ": " + std::to_string(r.t->steps.size()) +
-                   " steps, " + (r.t->valid ? std::string("valid") : "invalid: " + r.t->reason) +
+                   " steps, " +
+                   (r.t->verdict.valid() ? std::string("valid")
+                                         : "invalid: " + r.t->verdict.reason()) +
                    ">";
         });
 
     m.def(
         "transfer",
-        [](const PyMap& map, const PyProblem& problem, const py::handle& plan, bool rename_by_type,
-           bool keep_states, bool replan, std::string search, std::string heuristic,
-           std::uint64_t max_nodes, double max_time) {
+        [](const PyMap& map, const PyProblem& problem, const py::handle& plan, PyState* goal,
+           const std::string& goal_name, bool rename_by_type, bool keep_states, bool replan,
+           std::string search, std::string heuristic, std::uint64_t max_nodes, double max_time) {
+            transfer::TransferOptions o;
+            o.keep_states = keep_states;
+            o.rename_by_type = rename_by_type;
+            if (goal != nullptr) {
+                o.goal = intended_goal(map, *goal);
+                o.goal_name = goal_name.empty() ? goal->name() : goal_name;
+            }
             SearchArgs s{
                 std::move(search), std::move(heuristic), max_nodes, max_time, 0, py::none(), 1.0};
-            return run_transfer(map, problem, plan, rename_by_type, keep_states, replan, s);
+            return run_transfer(map, problem, plan, o, replan, s);
         },
         py::arg("map"), py::arg("problem"), py::arg("plan"), py::kw_only(),
-        py::arg("rename_by_type") = false, py::arg("keep_states") = false,
-        py::arg("replan") = false, py::arg("search") = "bfs", py::arg("heuristic") = "hff",
-        py::arg("max_nodes") = 0, py::arg("max_time") = 60.0,
+        py::arg("goal") = py::none(), py::arg("goal_name") = "", py::arg("rename_by_type") = false,
+        py::arg("keep_states") = false, py::arg("replan") = false, py::arg("search") = "bfs",
+        py::arg("heuristic") = "hff", py::arg("max_nodes") = 0, py::arg("max_time") = 60.0,
         R"doc(Transfers a plan of a problem on the map's source schema along the map (the
 paper's Algorithm 1): every action and match is migrated and applied in the target domain, each
-step checked, and the goal Δ_F(G) embedded monically. An invalid transfer is an answer, not an
-exception. replan also plans from scratch in the target domain (search, heuristic, limits as in
+step checked, and the goal Δ_F(G) embedded monically. goal, a state on the map's target schema,
+is the goal intended in the target domain: the verdict then also asks that it be satisfied, and
+goal satisfaction is measured for it (goal_name names it in the verdict's words; default: the
+state's name). An invalid transfer is an answer (Transfer.verdict), not an exception. replan also plans from scratch in the target domain (search, heuristic, limits as in
 catplan.plan) and compares. Runs without the GIL; Ctrl-C interrupts the replanning.)doc");
 }
 

@@ -40,13 +40,14 @@ int main(int argc, char** argv) {
         return fail("ColorToKitchen or CaseStudy is missing");
     }
     auto t = catplan::transfer::transfer_plan(*map->map, *problem->problem, *plan);
-    std::cout << "transferred " << t.steps.size() << " steps; goal " << t.goal.satisfied << "/"
-              << t.goal.total << "; " << (t.valid ? "valid" : "invalid: " + t.reason) << "\n";
+    const auto& v = t.verdict;
+    std::cout << "transferred " << t.steps.size() << " steps; goal " << v.goal.satisfied << "/"
+              << v.goal.total << "; " << (v.valid() ? "valid" : "invalid: " + v.reason()) << "\n";
     for (const auto& step : t.steps) {
         std::cout << "  " << step.target.to_string() << "\n";
     }
-    if (!t.valid || t.steps.size() != 8 || t.steps[0].target.to_string() != "unstack(E, D)" ||
-        t.goal.satisfied != t.goal.total || t.goal.total == 0) {
+    if (!v.valid() || t.steps.size() != 8 || t.steps[0].target.to_string() != "unstack(E, D)" ||
+        v.goal.satisfied != v.goal.total || v.goal.total == 0) {
         return fail("the transfer is not the paper's");
     }
     return 0;
