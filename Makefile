@@ -1,8 +1,12 @@
 # The two commands of the README. Both install what is missing (tools/install-deps.sh) and build
 # what is needed; the CMake presets hold the build settings.
-.PHONY: all deps demo test build release bench format check-format check-layers clean
+.PHONY: all deps demo test build release bench format check-format check-layers clean python \
+	install
 
 JOBS ?= 2
+PREFIX ?= /usr/local
+PYTHON ?= /usr/bin/python3
+VENV ?= build/venv
 
 all: release
 
@@ -25,16 +29,30 @@ test: build
 demo: release
 	@./tools/demo.sh build/release/src/catplan/cli/catplan
 
+# The Python package in a virtual environment that also sees Debian's numpy and pytest (Debian 12
+# marks its python3 externally managed; docs/python.md). Offline: nothing is downloaded.
+python: deps
+	$(PYTHON) -m venv --system-site-packages $(VENV)
+	$(VENV)/bin/pip install --no-build-isolation --no-index --no-deps .
+	@echo "catplan is installed in $(VENV): $(VENV)/bin/python -c 'import catplan'"
+
+# The C++ library, its headers and CMake package (find_package(catplan)), the catplan command,
+# its man page and its bash completion.
+install: deps
+	cmake --preset release >/dev/null
+	cmake --build --preset release -j $(JOBS) --target catplan catplan_cli_docs
+	cmake --install build/release --prefix $(PREFIX)
+
 bench: deps
 	cmake --preset release >/dev/null
 	cmake --build --preset release -j $(JOBS)
 	./tools/run-benchmarks.sh build/release
 
 format:
-	find src tests bench fuzz -name '*.[ch]pp' | xargs clang-format -i
+	find src tests bench fuzz python/src -name '*.[ch]pp' | xargs clang-format -i
 
 check-format:
-	find src tests bench fuzz -name '*.[ch]pp' | xargs clang-format --dry-run --Werror
+	find src tests bench fuzz python/src -name '*.[ch]pp' | xargs clang-format --dry-run --Werror
 
 check-layers:
 	python3 tools/check_layers.py

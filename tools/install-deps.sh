@@ -12,6 +12,10 @@ libgtest-dev libgmock-dev libbenchmark-dev libcli11-dev nlohmann-json3-dev libfm
 libsqlite3-dev libicu-dev graphviz libgraphviz-dev chromium"
 # The database layer: PostgreSQL's client library, and its server for the tests.
 PACKAGES="$PACKAGES libpq-dev postgresql"
+# The Python package (pybind11, Debian's python3 with venv and pip; pytest, numpy for tables).
+PACKAGES="$PACKAGES pybind11-dev python3-dev python3-pytest python3-numpy python3-venv python3-pip python3-setuptools python3-wheel"
+# The man page (help2man, rendered by man-db in its test) and the bash completion.
+PACKAGES="$PACKAGES help2man man-db bash-completion"
 # Optional groups: `fuzz` (clang, and compiler-rt's libFuzzer and sanitizer runtimes), `tidy` for
 # tools/tidy.sh, `coverage` for tools/coverage.sh.
 case "${1:-}" in
