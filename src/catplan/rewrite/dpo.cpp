@@ -1,6 +1,7 @@
 #include "catplan/rewrite/dpo.hpp"
 
 #include "catplan/hom/hom_search.hpp"
+#include "catplan/rewrite/detail/relations.hpp"
 
 #include <algorithm>
 #include <fmt/format.h>
@@ -483,6 +484,9 @@ Result<InPlaceOutcome> apply_in_place(const Shape& shape, ACSet& x, const ACSetM
                 }
             }
         }
+    }
+    if (!rule.relations.empty()) {
+        detail::merge_created_facts(rule, x, out.r_to_x, track_origin ? &out.origin : nullptr);
     }
     return out;
 }

@@ -111,6 +111,10 @@ struct Rule {
     /// Per attribute type, per variable of R: the expression giving its value, if any.
     std::vector<std::vector<std::optional<AttrExpr>>> exprs;
     std::vector<Parameter> parameters;
+    /// Objects whose parts are facts, determined by their values (PDDL's predicates): a part the
+    /// rule creates that equals one already there is merged into it, so adding a fact that holds
+    /// changes nothing (detail/relations.hpp).
+    std::vector<ObId> relations;
     SourceRange range;
 
     /// A rule with empty states on a schema (to be filled by a builder or the elaborator).
