@@ -1,0 +1,115 @@
+#include "catplan/pddl/steps.hpp"
+
+#include "catplan/plan/validate.hpp"
+#include "catplan/rewrite/dpo.hpp"
+
+#include <fmt/format.h>
+#include <map>
+
+namespace catplan::pddl {
+
+std::optional<plan::Step> variant_step(const Variant& v, const IpcStep& s) {
+    if (s.args.size() != v.param_of.size()) {
+        return std::nullopt;
+    }
+    plan::Step step{v.rule->name, std::vector<std::string>(v.rule->parameters.size()), s.range};
+    for (std::size_t i = 0; i < s.args.size(); ++i) {
+        if (v.param_of[i] < 0) {
+            if (s.args[i] != v.constant_of[i]) {
+                return std::nullopt;
+            }
+            continue;
+        }
+        auto& slot = step.args[static_cast<std::size_t>(v.param_of[i])];
+        if (!slot.empty() && slot != s.args[i]) {
+            return std::nullopt;
+        }
+        slot = s.args[i];
+    }
+    return step;
+}
+
+plan::Plan rule_plan(const Import& im, const IpcPlan& plan) {
+    plan::Plan out;
+    acset::ACSet x = *im.problem->initial;
+    bool replaying = true;
+    for (const auto& s : plan) {
+        const ActionVariants* av = im.find_action(s.action);
+        std::optional<plan::Step> fits, applied;
+        for (std::size_t k = 0; av != nullptr && k < av->variants.size() && !applied; ++k) {
+            const auto& var = av->variants[k];
+            auto step = variant_step(var, s);
+            if (!step) {
+                continue;
+            }
+            if (!fits) {
+                fits = step;
+            }
+            auto m = replaying ? plan::resolve_step(*var.rule, x, *step)
+                               : Result<hom::ACSetMorphism>(fail(std::string("not replayed")));
+            if (m) {
+                auto r = rewrite::rewrite_in_place(*var.rule, x, *m);
+                CATPLAN_ASSERT(r.has_value(), "a resolved match applies");
+                applied = step;
+            }
+        }
+        replaying = replaying && applied.has_value();
+        out.steps.push_back(applied ? *applied
+                            : fits  ? *fits
+                                    : plan::Step{s.action, s.args, s.range});
+    }
+    return out;
+}
+
+Problem problem_of(const Import& im, std::string name, const acset::ACSet& initial,
+                   const acset::ACSet& goal) {
+    Problem p;
+    p.name = std::move(name);
+    p.domain_name = im.pddl_domain.name;
+    // Types are listed parents first, so the last type a name is seen at is its most specific.
+    std::map<std::string, std::string> type_of;
+    std::vector<std::string> order;
+    for (const auto& t : im.pddl_domain.types) {
+        ObId ob = im.type_ob.at(t.name);
+        for (Part q = 0; q < initial.num_parts(ob); ++q) {
+            std::string n(initial.part_name(ob, q));
+            if (type_of.emplace(n, t.name).second) {
+                order.push_back(n);
+            } else {
+                type_of[n] = t.name;
+            }
+        }
+    }
+    for (const auto& n : order) {
+        bool constant =
+            std::any_of(im.pddl_domain.constants.begin(), im.pddl_domain.constants.end(),
+                        [&](const TypedName& c) { return c.name == n; });
+        if (!constant) {
+            p.objects.push_back({n, type_of[n], {}});
+        }
+    }
+    p.init = im.facts(initial);
+    for (auto& a : im.facts(goal)) {
+        p.goal.push_back({std::move(a), true, {}});
+    }
+    return p;
+}
+
+std::string write_problem(const Problem& p) {
+    std::string out = fmt::format("(define (problem {})\n  (:domain {})\n", p.name, p.domain_name);
+    out += "  (:objects";
+    for (const auto& o : p.objects) {
+        out += fmt::format(" {} - {}", o.name, o.type);
+    }
+    out += ")\n  (:init";
+    for (const auto& a : p.init) {
+        out += "\n    " + a.to_string();
+    }
+    out += ")\n  (:goal (and";
+    for (const auto& l : p.goal) {
+        out += "\n    " + l.to_string();
+    }
+    return out + ")))\n";
+}
+
+} // namespace catplan::pddl

@@ -1,0 +1,35 @@
+#pragma once
+// Between IPC steps and the steps of an imported domain's rules, and PDDL problems written back.
+//
+// A ground action `(stack a b)` is carried out by the variant of `stack` (import.hpp) whose
+// parameters its arguments fit and whose match exists in the state; rule_plan replays an IPC
+// plan to find them. A state of the imported schema reads back as a PDDL problem (its objects
+// with their most specific types and its facts), which write_problem writes as a PDDL file.
+
+#include "catplan/pddl/import.hpp"
+#include "catplan/pddl/ipc_plan.hpp"
+#include "catplan/plan/domain.hpp"
+
+#include <optional>
+#include <string>
+
+namespace catplan::pddl {
+
+/// The step of a variant's rule that an IPC step is, when its arguments fit the variant.
+std::optional<plan::Step> variant_step(const Variant& v, const IpcStep& s);
+
+/// The rule-level plan of an IPC plan: each step as the variant of its action that applies when
+/// the plan is replayed from the import's initial state; from the first step that does not apply
+/// on, the first variant its arguments fit (or the action's name), so that replaying the rule
+/// plan fails at the same step.
+plan::Plan rule_plan(const Import& im, const IpcPlan& plan);
+
+/// A PDDL problem of the import's domain whose initial state is `initial` and whose goal is the
+/// facts of `goal` (both states of the imported schema, objects named by their part names).
+Problem problem_of(const Import& im, std::string name, const acset::ACSet& initial,
+                   const acset::ACSet& goal);
+
+/// A problem as a PDDL problem file.
+std::string write_problem(const Problem& p);
+
+} // namespace catplan::pddl
