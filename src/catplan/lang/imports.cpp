@@ -1,5 +1,6 @@
 // Imports (docs/language.md, "Files and imports"): `@import "path.cp"` loads a file relative to the
-// importing one, each file once, and reports a cycle with its chain of files.
+// importing one, each file once, and reports a cycle with its chain of files; a `.pddl` file is
+// read by pddl_imports.cpp.
 
 #include "catplan/lang/detail/elaboration.hpp"
 #include "catplan/lang/detail/elaborator.hpp"
@@ -38,6 +39,11 @@ void import(Elaborator& ctx, const MacroCall& form, std::uint32_t file) {
     auto imported = ctx.sources.add_file(path);
     if (!imported) {
         ctx.sink.error(arg.range, fmt::format("cannot read imported file '{}'", path));
+        return;
+    }
+    if (is_pddl_path(path)) {
+        ctx.loaded.insert(key);
+        import_pddl_file(ctx, *imported, arg.range, true);
         return;
     }
     load_buffer(ctx, *imported, key, true);

@@ -49,9 +49,11 @@ bool binary_header(DiagnosticSink& sink, const MacroCall& form, std::string_view
 }
 
 void add_map(Elaborator& ctx, const std::string& name, SourceRange range, bool imported,
-             std::shared_ptr<const migrate::SchemaMap> map) {
+             std::shared_ptr<const migrate::SchemaMap> map,
+             std::vector<ActionCorrespondence> actions = {}) {
     Declaration d = new_declaration(DeclKind::Map, name, range, imported, map->target());
     d.map = std::move(map);
+    d.actions = std::move(actions);
     ctx.module.add(std::move(d));
 }
 
@@ -78,8 +80,10 @@ bool is_map_form(const MacroCall& form) {
     return h.size() == 2 && h[0].kind == Expr::Kind::Name && h[0].text != "SchRule";
 }
 
-void elaborate_map_declaration(Elaborator& ctx, const MacroCall& form, bool imported) {
+void elaborate_map_declaration(Elaborator& ctx, const MacroCall& written, bool imported) {
     DiagnosticSink& sink = ctx.sink;
+    MacroCall form = written;
+    spell_pddl_names(ctx, form);
     detail::MapForm mf;
     const Expr *target = nullptr, *source = nullptr;
     if (!binary_header(ctx.sink, form, "'@migration Name(Target, Source) begin ... end'", mf.name,
@@ -100,9 +104,11 @@ void elaborate_map_declaration(Elaborator& ctx, const MacroCall& form, bool impo
     mf.target = t;
     mf.source = s;
     mf.body = &form.body;
+    std::vector<ActionCorrespondence> actions;
+    add_pddl_hooks(ctx, mf, actions);
     auto map = elaborate_map(mf, sink);
     if (map && ctx.claim_name(mf.name, mf.name_range)) {
-        add_map(ctx, mf.name, mf.name_range, imported, std::move(map));
+        add_map(ctx, mf.name, mf.name_range, imported, std::move(map), std::move(actions));
     }
 }
 

@@ -76,6 +76,9 @@ public:
         // the queries of its ends, wherever their entries are written.
         std::vector<std::pair<Generator, const Expr*>> later;
         for (const Expr& st : *form_.body) {
+            if (form_.other_statement && form_.other_statement(st)) {
+                continue;
+            }
             auto g = entry_generator(st);
             if (!g) {
                 continue;
@@ -96,6 +99,9 @@ public:
             } else {
                 map_attr(AttrId(g.index), *st);
             }
+        }
+        if (form_.complete) {
+            form_.complete(*map_, [&](Generator g) { return attempted_.count(key(g)) != 0; });
         }
         report(map_->finish());
         check_declared_kinds();

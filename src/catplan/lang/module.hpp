@@ -7,7 +7,8 @@
 //   module.hpp   elaboration per macro: @present -> Schema, @acset_colim / @acset -> ACSet,
 //                @rule / @migration -> rewrite::Rule, @domain -> plan::Domain,
 //                @problem -> plan::Problem, @migration Name(Target, Source) and @compose ->
-//                migrate::SchemaMap (an ontology map), @import -> more declarations;
+//                migrate::SchemaMap (an ontology map), @import -> more declarations (of a
+//                .pddl file: its domain, whose schema is named like it, or its problem);
 //                printing back to loadable text
 //
 // Rule blocks (Pre/Keep/Eff, or L/K/R) are *partial* presentations, unlike instances: a hom or
@@ -24,6 +25,7 @@
 #include "catplan/base/diagnostic.hpp"
 #include "catplan/base/source.hpp"
 #include "catplan/migrate/schema_map.hpp"
+#include "catplan/pddl/import.hpp"
 #include "catplan/plan/domain.hpp"
 #include "catplan/rewrite/rule.hpp"
 #include "catplan/schema/schema.hpp"
@@ -36,6 +38,13 @@
 namespace catplan::lang {
 
 enum class DeclKind { Schema, Instance, Rule, Domain, Problem, Map };
+
+/// An entry of a map's `actions` section (`unstack => pick-from`): steps of the source action
+/// become steps of the target action.
+struct ActionCorrespondence {
+    std::string source, target;
+    SourceRange range;
+};
 
 struct Declaration {
     DeclKind kind = DeclKind::Schema;
@@ -57,6 +66,11 @@ struct Declaration {
     std::string initial_name, goal_name;
     /// Maps only: the finished, valid ontology map (map->target() is D', map->source() is D).
     std::shared_ptr<const migrate::SchemaMap> map;
+    /// Maps only: the actions section, in the order written.
+    std::vector<ActionCorrespondence> actions;
+    /// Domains and problems read from a PDDL file (`@import "x.pddl"`): the import, with the
+    /// PDDL names of the schema's generators and the rules' actions.
+    std::shared_ptr<const pddl::Import> pddl;
 };
 
 class Module {

@@ -5,6 +5,7 @@
 // of its declarations.
 
 #include "catplan/lang/detail/elaborator.hpp"
+#include "catplan/lang/detail/map_elaboration.hpp"
 #include "catplan/lang/syntax.hpp"
 #include "catplan/schema/schema.hpp"
 
@@ -24,6 +25,22 @@ void elaborate_file(Elaborator& ctx, const ParsedFile& parsed, bool imported);
 std::string canonical_path(const std::string& path);
 /// Parses a loaded buffer, loads its imports, and elaborates it.
 void load_buffer(Elaborator& ctx, std::uint32_t file, const std::string& key, bool imported);
+
+// ---- pddl_imports.cpp
+// ----------------------------------------------------------------------------
+
+/// Whether an imported path names a PDDL file (it ends in .pddl).
+bool is_pddl_path(std::string_view path);
+/// Declares a loaded PDDL file: a domain (its schema and domain named as the file's `(domain
+/// ...)`) or a problem of a domain imported before; errors at `at` or in the file.
+void import_pddl_file(Elaborator& ctx, std::uint32_t file, SourceRange at, bool imported);
+/// Rewrites names spelled with hyphens (`courier-in`, which parses as a subtraction) into names,
+/// where they name a generator or action of an imported PDDL domain.
+void spell_pddl_names(const Elaborator& ctx, MacroCall& form);
+/// Gives a map over PDDL schemas the entries PDDL's structure implies and reads its actions
+/// section into `actions`.
+void add_pddl_hooks(const Elaborator& ctx, MapForm& form,
+                    std::vector<ActionCorrespondence>& actions);
 
 // ---- schemas.cpp
 // ---------------------------------------------------------------------------------

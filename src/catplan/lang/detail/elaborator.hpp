@@ -5,6 +5,8 @@
 //
 //   module.cpp           the order of a file's passes (schemas, kinds, instances, rules, ...)
 //   imports.cpp          @import, import cycles, loading each file once
+//   pddl_imports.cpp     @import of a .pddl file; names, implied entries and the actions
+//                        section of maps over PDDL schemas
 //   schemas.cpp          @present -> Schema
 //   kinds.cpp            value kinds of attribute types inferred from literals
 //   instances.cpp        @acset_colim (a presentation, detail/colimit.hpp) and @acset -> ACSet
@@ -19,6 +21,7 @@
 #include "catplan/base/source.hpp"
 #include "catplan/lang/module.hpp"
 #include "catplan/lang/syntax.hpp"
+#include "catplan/pddl/import.hpp"
 #include "catplan/schema/schema.hpp"
 
 #include <cstdint>
@@ -76,6 +79,8 @@ struct Elaborator {
     std::set<std::string> file_instances;
     /// Kinds inferred from literals, per schema (applied to the schema after each file's pass).
     std::map<schema::Schema*, InferredKinds, std::less<>> inferred;
+    /// The PDDL domains imported so far, by their PDDL name (pddl_imports.cpp).
+    std::map<std::string, std::shared_ptr<const pddl::Import>> pddl_domains;
 };
 
 /// A declaration with its kind, name, place and schema; the caller fills in the rest.

@@ -7,6 +7,7 @@
 #include "catplan/lang/syntax.hpp"
 #include "catplan/migrate/schema_map.hpp"
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -20,6 +21,13 @@ struct MapForm {
     schema::SchemaPtr target;
     schema::SchemaPtr source;
     const std::vector<Expr>* body = nullptr;
+    /// Called before the map is finished, with whether each target generator has an entry: adds
+    /// the entries the schemas imply (PDDL's is-a homs, argument homs and names). Optional.
+    std::function<void(migrate::SchemaMap&, const std::function<bool(schema::Generator)>&)>
+        complete;
+    /// A statement of the body that is not an entry (an actions section): true when it handled
+    /// it. Optional.
+    std::function<bool(const Expr&)> other_statement;
 };
 
 /// The finished map, or nullptr when it has errors (all of them reported to `sink`, warnings too).
