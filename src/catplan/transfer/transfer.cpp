@@ -75,10 +75,12 @@ public:
                 }
             }
         }
+        std::vector<Part> survivors(s.num_obs());
         for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
             for (Part p : deleted[o]) {
                 remove(ObId(o), p);
             }
+            survivors[o] = static_cast<Part>(x_.num_parts(ObId(o)) - deleted[o].size());
         }
         auto r_to_x = rewrite::rewrite_in_place(rule, x_, m);
         if (!r_to_x) {
@@ -88,14 +90,13 @@ public:
         // the created parts come after them (R's order) and are named below. A moved part's
         // entry still holds its old id: point it at the slot it sits in now.
         for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
-            Part survivors = x_.num_parts(ObId(o)) - created_count(rule, ObId(o));
             for (Part p : deleted[o]) {
-                if (p < survivors) {
-                    moved(ObId(o), p, survivors);
+                if (p < survivors[o]) {
+                    moved(ObId(o), p, survivors[o]);
                 }
             }
         }
-        name_created(rule, *r_to_x, name_of);
+        name_created(rule, *r_to_x, survivors, name_of);
         return r_to_x;
     }
 
@@ -186,16 +187,10 @@ private:
         }
     }
 
-    // The parts of ob that rule creates (R's parts outside r's image).
-    static Part created_count(const rewrite::Rule& rule, ObId ob) {
-        std::vector<bool> kept(rule.R.num_parts(ob), false);
-        for (Part k : rule.r.components[ob.index()]) {
-            kept[k] = true;
-        }
-        return static_cast<Part>(std::count(kept.begin(), kept.end(), false));
-    }
-
+    // Names the parts the rule created; a created fact merged into one already there
+    // (Rule::relations) is not new and keeps its name.
     void name_created(const rewrite::Rule& rule, const ACSetMorphism& r_to_x,
+                      const std::vector<Part>& survivors,
                       const std::function<std::string(ObId, Part)>& name_of) {
         const auto& s = x_.schema();
         for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
@@ -204,8 +199,8 @@ private:
                 kept[k] = true;
             }
             for (Part q = 0; q < kept.size(); ++q) {
-                if (!kept[q]) {
-                    Part p = r_to_x.components[o][q];
+                Part p = r_to_x.components[o][q];
+                if (!kept[q] && p >= survivors[o]) {
                     x_.set_part_name(ObId(o), p, name_of(ObId(o), q));
                     add(ObId(o), p);
                 }
@@ -450,6 +445,9 @@ private:
             source_failure(i, m.error());
             return false;
         }
+        if (options_.target_actions) {
+            return own_action_step(i, *a, std::move(*m));
+        }
         if (a->target == nullptr) {
             return fail_at(i, "the action does not migrate: " + migration_failure(s.action));
         }
@@ -491,6 +489,84 @@ private:
         }
         st.source_match = std::move(*m);
         st.target_match = std::move(matches[0]);
+        st.target_steps = {st.target};
+        out_.steps.push_back(std::move(st));
+        return true;
+    }
+
+    // Applies the source step, naming created parts after their generator in the rule or their
+    // object and the step (block@2).
+    Result<ACSetMorphism> apply_source(std::size_t i, const rewrite::Rule& rule,
+                                       const ACSetMorphism& m) {
+        return x_->apply(rule, m, [&](ObId ob, Part q) {
+            std::string base(rule.R.part_name(ob, q));
+            if (base.empty()) {
+                base = fmt::format("{}@{}", lowercase(problem_.domain->schema->ob(ob).name), i + 1);
+            }
+            return x_->fresh_name(ob, base);
+        });
+    }
+
+    // Step i with the target's own actions (correspond.hpp): the corresponding target action at
+    // the generated action's match, else a repair from Y_{i-1} to Δ_F(X_i) (repair.hpp).
+    bool own_action_step(std::size_t i, const ActionPair& a, ACSetMorphism m) {
+        const auto& own = *options_.target_actions;
+        const Correspondence* c = a.target ? own.find(a.target->name) : nullptr;
+        std::vector<ACSetMorphism> matches;
+        if (c != nullptr) {
+            rewrite::MatchOptions opt;
+            opt.initial = carried_bindings(a, m, *x_, *y_, renaming_);
+            opt.max_results = 1;
+            matches = rewrite::find_matches(*a.target, y_->state(), opt);
+        }
+        StepTransfer st;
+        st.source = plan_.steps[i];
+        st.source_bindings = plan::describe_match(m, a.source->L, x_->state());
+        auto r_to_x = apply_source(i, *a.source, m);
+        CATPLAN_ASSERT(r_to_x, "a valid source match failed to apply");
+        if (!matches.empty()) {
+            ACSetMorphism mt = transport(matches[0], *c);
+            st.kind = StepTransfer::Kind::Corresponds;
+            st.target = step_of(*c->target, mt, y_->state());
+            st.target_bindings = plan::describe_match(mt, c->target->L, y_->state());
+            auto applied = y_->apply(*c->target, mt, [&](ObId ob, Part q) {
+                const auto& origin = a.r_origins[ob.index()];
+                Part qg = generated_part(*c, ob, q);
+                if (!origin || qg >= origin->parts.size()) {
+                    return y_->fresh_name(ob, lowercase(f_.target()->ob(ob).name));
+                }
+                Part in_x = r_to_x->components[origin->ob.index()][origin->parts[qg]];
+                return renamed(renaming_, x_->state().part_name(origin->ob, in_x));
+            });
+            CATPLAN_ASSERT(applied, "a corresponding action applies where its generated one does");
+            st.target_steps = {st.target};
+            st.source_match = std::move(m);
+            st.target_match = std::move(mt);
+        } else {
+            ACSet subgoal = migrate::migrate(f_, x_->state());
+            rename_parts(subgoal, renaming_);
+            auto repair = repair_step(own.domain, y_->state(), subgoal, options_.repair);
+            if (!repair.found) {
+                return fail_at(i, fmt::format("{}; repair: {}",
+                                              c == nullptr ? "no target action corresponds"
+                                                           : "the corresponding action has no "
+                                                             "match in the target",
+                                              repair.why));
+            }
+            for (const auto& step : repair.steps) {
+                const auto* rule = own.domain->find_rule(step.action);
+                auto mt = plan::resolve_step(*rule, y_->state(), step);
+                CATPLAN_ASSERT(mt, "a repair's step applies");
+                auto applied = y_->apply(*rule, *mt, [&](ObId ob, Part) {
+                    return y_->fresh_name(ob, lowercase(f_.target()->ob(ob).name));
+                });
+                CATPLAN_ASSERT(applied, "a repair's step applies");
+            }
+            st.kind = StepTransfer::Kind::Repaired;
+            st.target_steps = std::move(repair.steps);
+            st.repair_stats = repair.stats;
+            st.source_match = std::move(m);
+        }
         out_.steps.push_back(std::move(st));
         return true;
     }
@@ -550,12 +626,19 @@ private:
 };
 
 // The claim of Appendix A: a delta map preserves pushouts, so each migrated DPO step applies
-// and Y_i = Δ_F(X_i).
-Claim valid_by_construction(MigrationKind migration) {
+// and Y_i = Δ_F(X_i). A target action with the same span as the migrated one is the same step; a
+// repair is not.
+Claim valid_by_construction(MigrationKind migration, const std::vector<StepTransfer>& steps) {
     Claim c;
     c.kind = Claim::Kind::ValidByConstruction;
     c.hypotheses.push_back(
         {"F is a delta map (Δ_F preserves pushouts)", migration == MigrationKind::Delta});
+    c.hypotheses.push_back(
+        {"every step is carried out by its migrated action or one with the same span (none is "
+         "repaired)",
+         std::none_of(steps.begin(), steps.end(), [](const StepTransfer& s) {
+             return s.kind == StepTransfer::Kind::Repaired;
+         })});
     return c;
 }
 
@@ -591,7 +674,7 @@ void judge(TransferResult& out, const ACSet& y, std::optional<Fault> source,
         v.goal = goal_satisfaction(*out.target_goal, y);
     }
     v.status = v.faults.empty() ? Verdict::Status::Valid : Verdict::Status::Invalid;
-    v.claims = {valid_by_construction(out.migration)};
+    v.claims = {valid_by_construction(out.migration, out.steps)};
     out.timings.validate_ms = ms_since(t0);
 }
 
@@ -628,6 +711,14 @@ TransferResult transfer_plan(const SchemaMap& f, const plan::Problem& problem,
     auto source = Transfer(f, problem, plan, options, out).run();
     judge(out, *out.final_state, std::move(source), options);
     out.timings.total_ms = ms_since(t0);
+    return out;
+}
+
+std::vector<plan::Step> target_plan(const std::vector<StepTransfer>& steps) {
+    std::vector<plan::Step> out;
+    for (const auto& s : steps) {
+        out.insert(out.end(), s.target_steps.begin(), s.target_steps.end());
+    }
     return out;
 }
 
@@ -684,11 +775,7 @@ Replan replan(const TransferResult& t, const plan::SearchOptions& options) {
             out.steps.push_back(rule ? collapse_arguments(*rule, s) : s);
         }
     }
-    std::vector<plan::Step> transferred;
-    for (const auto& s : t.steps) {
-        transferred.push_back(s.target);
-    }
-    out.edit_distance = edit_distance(transferred, out.steps);
+    out.edit_distance = edit_distance(target_plan(t.steps), out.steps);
     return out;
 }
 

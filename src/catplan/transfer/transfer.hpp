@@ -31,7 +31,9 @@
 #include "catplan/migrate/schema_map.hpp"
 #include "catplan/plan/domain.hpp"
 #include "catplan/plan/search.hpp"
+#include "catplan/transfer/correspond.hpp"
 #include "catplan/transfer/goal.hpp"
+#include "catplan/transfer/repair.hpp"
 #include "catplan/transfer/verdict.hpp"
 
 #include <memory>
@@ -76,10 +78,19 @@ struct TransferOptions {
     /// The intended goal's name, for the verdict's words ("the intended goal Sandwich is not
     /// satisfied").
     std::string goal_name;
+    /// The target domain's own actions (correspond.hpp): each step is carried out by the target
+    /// action its generated action corresponds to, else repaired (repair.hpp). Null to carry
+    /// out the generated actions.
+    std::shared_ptr<const TargetActions> target_actions;
+    RepairOptions repair;
 };
 
 /// One transferred step.
 struct StepTransfer {
+    /// How the step was carried out in the target: by its generated action Δ_F(a), by the target
+    /// action that one corresponds to, or by a repair (several target steps, or none).
+    enum class Kind { Generated, Corresponds, Repaired };
+    Kind kind = Kind::Generated;
     plan::Step source;           ///< as written in the source plan
     plan::Step target;           ///< the migrated action with the target parts it binds
     ACSetMorphism source_match;  ///< L -> X_{i-1}
@@ -88,7 +99,14 @@ struct StepTransfer {
     std::string target_bindings; ///< the same for the target match
     /// Parameters of the source action that its migration lost (the map does not see them).
     std::vector<std::string> lost_parameters;
+    /// The target steps the source step became (`target` alone, unless repaired).
+    std::vector<plan::Step> target_steps;
+    /// For a repair, the local search's statistics.
+    plan::SearchStats repair_stats;
 };
+
+/// Every target step of a transfer, in order (the steps repairs made included).
+std::vector<plan::Step> target_plan(const std::vector<StepTransfer>& steps);
 
 /// Wall-clock times of the phases, in milliseconds.
 struct Timings {
