@@ -3,6 +3,7 @@
 #include "catplan/base/output_file.hpp"
 #include "catplan/cli/commands.hpp"
 #include "catplan/cli/options.hpp"
+#include "catplan/cli/pddl_transfer.hpp"
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
@@ -193,8 +194,12 @@ void add_transfer_input_options(CLI::App* cmd, TransferArgs& a) {
         ->required();
     cmd->add_option("--map", a.map, "the ontology map F : target -> source")->required();
     cmd->add_option("--domain", a.domain, "the source domain (default: the problem's)");
-    cmd->add_option("--problem", a.problem, "the source problem")->required();
-    cmd->add_option("--plan", a.plan_file, "the source plan: one step per line")->required();
+    cmd->add_option("--problem", a.problem,
+                    "the source problem (or a PDDL problem file of a domain FILE imports)")
+        ->required();
+    cmd->add_option("--plan", a.plan_file,
+                    "the source plan: one step per line (an IPC plan with a PDDL problem)")
+        ->required();
     cmd->add_option("--goal", a.goal,
                     "an instance of the target schema: the goal intended in the target domain "
                     "(default: the migrated source goal)");
@@ -232,6 +237,9 @@ std::optional<TransferInputs> load_transfer_inputs(Session& s, const TransferArg
     TransferInputs in;
     if (const auto* d = find_declaration(*m, a.file, a.map, lang::DeclKind::Map, err)) {
         in.map = d->map;
+    }
+    if (is_pddl_problem(a.problem)) {
+        return in.map ? load_pddl_transfer_inputs(s, *m, std::move(in), a, err) : std::nullopt;
     }
     // The problem of the loaded module: loading FILE again would make new schemas, which the
     // map would not be on.

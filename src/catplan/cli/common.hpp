@@ -100,6 +100,9 @@ std::shared_ptr<const acset::ACSet> find_target_goal(const lang::Module& m, cons
 /// What `transfer` and `report` read from their command lines.
 struct TransferArgs {
     std::string file, map, domain, problem, plan_file, goal;
+    /// With PDDL inputs (pddl_transfer.hpp): where to write the target problem, and the user's
+    /// own target problem to compare with.
+    std::string problem_output, target_problem;
     bool rename_by_type = false;
     /// Replanning in the target domain (--replan and its search settings).
     bool replan = false;
@@ -116,6 +119,8 @@ void add_replan_options(CLI::App* cmd, TransferArgs& a, const std::string& repla
 /// The search the replan options ask for.
 plan::SearchOptions replan_options(const TransferArgs& a);
 
+struct PddlTransfer;
+
 /// Everything a transfer reads: the map, the source problem (of the same loaded module, so the
 /// map is on its schema), the plan, and with --goal the goal intended in the target domain.
 struct TransferInputs {
@@ -123,6 +128,8 @@ struct TransferInputs {
     plan::ProblemPtr problem;
     plan::Plan plan;
     std::shared_ptr<const acset::ACSet> target_goal;
+    /// When --problem is a PDDL file: the PDDL side of the inputs (pddl_transfer.hpp).
+    std::shared_ptr<const PddlTransfer> pddl;
 };
 
 /// Loads the inputs a's names; nullopt with every error printed.

@@ -5,6 +5,7 @@
 #include "catplan/cli/commands.hpp"
 #include "catplan/cli/common.hpp"
 #include "catplan/cli/options.hpp"
+#include "catplan/cli/pddl_transfer.hpp"
 #include "catplan/json/json.hpp"
 #include "catplan/lang/module.hpp"
 #include "catplan/migrate/describe.hpp"
@@ -50,11 +51,7 @@ std::vector<std::string> plan_strings(const std::vector<plan::Step>& steps) {
 }
 
 std::vector<plan::Step> target_steps(const transfer::TransferResult& t) {
-    std::vector<plan::Step> out;
-    for (const auto& s : t.steps) {
-        out.push_back(s.target);
-    }
-    return out;
+    return transfer::target_plan(t.steps);
 }
 
 // What the command measured around the library calls.
@@ -80,10 +77,14 @@ std::string text_report(const TransferCommandArgs& a, const TransferInputs& in, 
                          ? "valid"
                          : "invalid: " + v.find(transfer::Fault::Kind::SourcePlan)->to_string());
     for (std::size_t i = 0; i < in.plan.steps.size(); ++i) {
-        o += fmt::format("  {}. {}\n", i + 1, in.plan.steps[i].to_string());
+        o += fmt::format("  {}. {}\n", i + 1,
+                         in.pddl ? in.pddl->plan[i].to_string() : in.plan.steps[i].to_string());
     }
-    o += fmt::format("target plan ({} steps):\n", t.steps.size());
-    for (std::size_t i = 0; i < t.steps.size(); ++i) {
+    o += fmt::format("target plan ({} steps):\n", transfer::target_plan(t.steps).size());
+    if (in.pddl) {
+        o += pddl_steps_text(in, t);
+    }
+    for (std::size_t i = 0; i < t.steps.size() && !in.pddl; ++i) {
         const auto& st = t.steps[i];
         o += fmt::format("  {}. {}\n     match: {}\n", i + 1, st.target.to_string(),
                          st.target_bindings);
@@ -212,7 +213,8 @@ int cmd_transfer(const TransferCommandArgs& a, std::ostream& out, std::ostream& 
     options.keep_states = a.trace;
     options.rename_by_type = a.in.rename_by_type;
     options.goal = in->target_goal;
-    options.goal_name = a.in.goal;
+    options.goal_name = in->pddl && a.in.goal.empty() ? a.in.target_problem : a.in.goal;
+    options.target_actions = in->pddl ? in->pddl->actions : nullptr;
     Outcome r;
     r.t = transfer::transfer_plan(*in->map, *in->problem, in->plan, options);
     r.transfer_peak_kib = transfer::peak_rss_kib();
@@ -221,11 +223,22 @@ int cmd_transfer(const TransferCommandArgs& a, std::ostream& out, std::ostream& 
     }
     std::string text =
         a.format == "json" ? json::dump(json_report(a, *in, r), 2) + "\n" : text_report(a, *in, r);
-    int rc = emit(text, a.output, out, err);
+    int checked = kOk;
+    std::vector<OutputText> outputs;
+    if (in->pddl) {
+        // With PDDL inputs, -o is the target IPC plan and the report goes to stdout.
+        std::string checks;
+        checked = finish_pddl_transfer(*in, a.in, r.t, a.output, checks, outputs);
+        text += a.format == "json" ? "" : checks;
+        outputs.insert(outputs.begin(), OutputText{text, ""});
+    } else {
+        outputs.push_back({text, a.output});
+    }
+    int rc = emit(outputs, out, err);
     if (rc != kOk) {
         return rc;
     }
-    return r.t.verdict.valid() ? kOk : kNo;
+    return r.t.verdict.valid() && checked == kOk ? kOk : kNo;
 }
 
 } // namespace
@@ -242,7 +255,14 @@ void add_transfer_commands(CLI::App& app, CommandTable& table) {
         ->capture_default_str();
     add_replan_options(cmd, a->in,
                        "also plan from scratch in the target domain and compare (paper Metric 5)");
-    cmd->add_option("-o,--output", a->output, "write the report to this file");
+    cmd->add_option("-o,--output", a->output,
+                    "write the report to this file (with a PDDL problem: the target IPC plan)");
+    cmd->add_option("--problem-output", a->in.problem_output,
+                    "with a PDDL problem: write the target problem (Δ_F of its initial state and "
+                    "goal) as PDDL to this file");
+    cmd->add_option("--target-problem", a->in.target_problem,
+                    "with a PDDL problem: the target's own PDDL problem, whose initial state must "
+                    "be Δ_F of the source's and whose goal is the intended goal");
     cmd->add_flag("--no-timing", a->no_timing, "leave out times and memory (reproducible output)");
     table.add(cmd, [a](std::ostream& o, std::ostream& e) { return cmd_transfer(*a, o, e); });
 }

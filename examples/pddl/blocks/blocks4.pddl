@@ -1,0 +1,25 @@
+; The blocks world with a gripper: four operators (pick-up, put-down, stack, unstack).
+(define (domain blocks4)
+  (:requirements :strips :typing)
+  (:types block)
+  (:predicates (on ?x - block ?y - block)
+               (on-table ?x - block)
+               (clear ?x - block)
+               (hand-empty)
+               (holding ?x - block))
+  (:action pick-up
+    :parameters (?x - block)
+    :precondition (and (clear ?x) (on-table ?x) (hand-empty))
+    :effect (and (not (on-table ?x)) (not (clear ?x)) (not (hand-empty)) (holding ?x)))
+  (:action put-down
+    :parameters (?x - block)
+    :precondition (holding ?x)
+    :effect (and (not (holding ?x)) (clear ?x) (hand-empty) (on-table ?x)))
+  (:action stack
+    :parameters (?x - block ?y - block)
+    :precondition (and (holding ?x) (clear ?y))
+    :effect (and (not (holding ?x)) (not (clear ?y)) (clear ?x) (hand-empty) (on ?x ?y)))
+  (:action unstack
+    :parameters (?x - block ?y - block)
+    :precondition (and (on ?x ?y) (clear ?x) (hand-empty))
+    :effect (and (holding ?x) (clear ?y) (not (clear ?x)) (not (hand-empty)) (not (on ?x ?y)))))
