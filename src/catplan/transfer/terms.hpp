@@ -10,6 +10,7 @@
 // which no identifier of the language or of PDDL can.
 
 #include "catplan/acset/acset.hpp"
+#include "catplan/hom/morphism.hpp"
 
 #include <string>
 #include <string_view>
@@ -42,5 +43,11 @@ std::string attr_statement(const acset::ACSet& x, AttrId a, Part p);
 /// Everything x states about part p of ob: the part, then each set hom and each set attribute
 /// in schema order.
 std::vector<std::string> part_statements(const acset::ACSet& x, ObId ob, Part p);
+
+/// A match m : L -> X in words, each part of L once with the part of X it goes to, both called
+/// by part_word (`block ↦ E, isEmpty(empty) ↦ isEmpty(empty)`), then each variable of L with its
+/// value.
+std::string describe_bindings(const hom::ACSetMorphism& m, const acset::ACSet& l,
+                              const acset::ACSet& x);
 
 } // namespace catplan::transfer

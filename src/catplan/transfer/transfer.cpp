@@ -6,6 +6,7 @@
 #include "catplan/transfer/divergence.hpp"
 #include "catplan/transfer/named_state.hpp"
 #include "catplan/transfer/rename.hpp"
+#include "catplan/transfer/terms.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -282,8 +283,8 @@ private:
         StepTransfer st;
         st.source = s;
         st.target = step_of(*a->target, matches[0], y_->state());
-        st.source_bindings = plan::describe_match(*m, a->source->L, x_->state());
-        st.target_bindings = plan::describe_match(matches[0], a->target->L, y_->state());
+        st.source_bindings = describe_bindings(*m, a->source->L, x_->state());
+        st.target_bindings = describe_bindings(matches[0], a->target->L, y_->state());
         st.lost_parameters = lost_parameters(*a->source, *a->target);
         if (comparing()) {
             check_->before(*m, *x_, matches[0], *y_);
