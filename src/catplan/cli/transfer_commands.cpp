@@ -170,12 +170,12 @@ std::string text_report(const TransferCommandArgs& a, const TransferInputs& in, 
                  "ontology does not tie them, so replanning may mix them\n";
         }
         if (!a.no_timing) {
-            o +=
-                fmt::format("transfer {:.3f} ms vs replanning {:.3f} ms: {:.0f}x; peak memory "
-                            "{:.1f} MB after transfer, {:.1f} MB after replanning\n",
-                            t.timings.total_ms, rp->ms, rp->ms / std::max(t.timings.total_ms, 1e-6),
-                            static_cast<double>(r.transfer_peak_kib) / 1024.0,
-                            static_cast<double>(rp->peak_rss_kib) / 1024.0);
+            o += fmt::format("transfer {:.3f} ms vs replanning {:.3f} ms: {}; peak memory "
+                             "{:.1f} MB after transfer, {:.1f} MB after replanning\n",
+                             t.timings.total_ms, rp->ms,
+                             transfer::speedup_text(*rp, t.timings.total_ms),
+                             static_cast<double>(r.transfer_peak_kib) / 1024.0,
+                             static_cast<double>(rp->peak_rss_kib) / 1024.0);
         }
     }
     return o;
@@ -240,6 +240,7 @@ nlohmann::json json_report(const TransferCommandArgs& a, const TransferInputs& i
             k["ms"] = rp.ms;
             k["peak_rss_kib"] = rp.peak_rss_kib;
             k["speedup"] = rp.ms / std::max(t.timings.total_ms, 1e-6);
+            k["speedup_is_lower_bound"] = transfer::hit_limit(rp);
         }
         j["replan"] = k;
     }

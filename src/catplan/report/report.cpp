@@ -351,7 +351,7 @@ std::string efficiency_section(const ReportInput& in) {
             fmt::format("{:.3f} ms (migrate {:.3f}, replay and apply {:.3f}, validate {:.3f})",
                         tm.total_ms, tm.migrate_ms, tm.apply_ms, tm.validate_ms));
         row("replanning time", fmt::format("{:.3f} ms", rp.ms));
-        row("replanning / transfer", fmt::format("{:.0f}x", rp.ms / std::max(tm.total_ms, 1e-6)));
+        row("replanning / transfer", transfer::speedup_text(rp, tm.total_ms));
         row("peak memory after transfer",
             fmt::format("{:.1f} MB", static_cast<double>(in.transfer_peak_kib) / 1024.0));
         row("peak memory after replanning",

@@ -604,4 +604,19 @@ Replan replan(const TransferResult& t, const plan::SearchOptions& options) {
     return out;
 }
 
+bool hit_limit(const Replan& r) {
+    auto st = r.search.status;
+    return st == plan::SearchStatus::NodeLimit || st == plan::SearchStatus::TimeLimit ||
+           st == plan::SearchStatus::MemoryLimit;
+}
+
+std::string speedup_text(const Replan& r, double transfer_ms) {
+    double ratio = r.ms / std::max(transfer_ms, 1e-6);
+    if (hit_limit(r)) {
+        return fmt::format("> {:.0f}x (replanning hit its {})", ratio,
+                           plan::to_string(r.search.status));
+    }
+    return fmt::format("{:.0f}x", ratio);
+}
+
 } // namespace catplan::transfer

@@ -159,6 +159,13 @@ struct Replan {
 /// Δ_F(G)) and compares the plan found with the transferred one.
 Replan replan(const TransferResult& t, const plan::SearchOptions& options);
 
+/// Whether replanning stopped at a limit (node, time, memory) rather than finishing.
+bool hit_limit(const Replan& r);
+
+/// Replanning time over transfer time: "12x", or "> 12x (replanning hit its time limit)" when
+/// replanning stopped at a limit, so the figure is a lower bound.
+std::string speedup_text(const Replan& r, double transfer_ms);
+
 /// The edit distance between two step lists (insertions, deletions, substitutions of whole
 /// steps).
 std::size_t edit_distance(const std::vector<plan::Step>& a, const std::vector<plan::Step>& b);

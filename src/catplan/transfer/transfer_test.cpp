@@ -510,6 +510,17 @@ TEST(Transfer, CollapsedArgumentsShowPartsThatDisagree) {
     EXPECT_EQ(collapse_arguments(rule, mixed).to_string(), "stack(B|A, A|D)");
 }
 
+TEST(Transfer, ASpeedupAgainstACutOffSearchIsALowerBound) {
+    Replan r;
+    r.ms = 1000;
+    r.search.status = plan::SearchStatus::Solved;
+    EXPECT_FALSE(hit_limit(r));
+    EXPECT_EQ(speedup_text(r, 10), "100x");
+    r.search.status = plan::SearchStatus::TimeLimit;
+    EXPECT_TRUE(hit_limit(r));
+    EXPECT_EQ(speedup_text(r, 10), "> 100x (replanning hit its time limit)");
+}
+
 TEST(Transfer, EditDistanceCountsWholeSteps) {
     using S = plan::Step;
     std::vector<S> a = {{"pickup", {"A"}, {}}, {"stack", {"A", "B"}, {}}};
