@@ -3,7 +3,10 @@
 #include "catplan/migrate/migration.hpp"
 #include "catplan/plan/validate.hpp"
 #include "catplan/rewrite/dpo.hpp"
+#include "catplan/transfer/divergence.hpp"
+#include "catplan/transfer/named_state.hpp"
 #include "catplan/transfer/rename.hpp"
+#include "catplan/transfer/terms.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -31,194 +34,6 @@ std::string lowercase(std::string_view text) {
     }
     return out;
 }
-
-// A state whose parts are named, with an index name -> part per object kept in step with every
-// rewrite (so a step costs what it touches, not the size of the state). A name shared by two
-// parts of an object maps to kNoPart (ambiguous).
-class NamedState {
-public:
-    explicit NamedState(ACSet x)
-        : x_(std::move(x)), index_(x_.schema().num_obs()), suffix_hints_(index_.size()) {
-        for (std::uint32_t o = 0; o < index_.size(); ++o) {
-            index_[o].reserve(x_.num_parts(ObId(o)));
-            for (Part p = 0; p < x_.num_parts(ObId(o)); ++p) {
-                add(ObId(o), p);
-            }
-        }
-    }
-
-    const ACSet& state() const { return x_; }
-
-    /// The state, moved out (the names index is left behind).
-    ACSet release() && { return std::move(x_); }
-
-    /// The only part of ob with this name, or kNoPart.
-    Part find(ObId ob, std::string_view name) const {
-        auto it = index_[ob.index()].find(name);
-        return it == index_[ob.index()].end() ? kNoPart : it->second;
-    }
-
-    /// Applies rule at m in place, naming each created part with name_of(ob, part of R).
-    Result<ACSetMorphism> apply(const rewrite::Rule& rule, const ACSetMorphism& m,
-                                const std::function<std::string(ObId, Part)>& name_of) {
-        const auto& s = x_.schema();
-        // The parts to be deleted: matched parts of L outside l's image.
-        std::vector<std::vector<Part>> deleted(s.num_obs());
-        for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
-            std::vector<bool> kept(rule.L.num_parts(ObId(o)), false);
-            for (Part k : rule.l.components[o]) {
-                kept[k] = true;
-            }
-            for (Part p = 0; p < kept.size(); ++p) {
-                if (!kept[p]) {
-                    deleted[o].push_back(m.components[o][p]);
-                }
-            }
-        }
-        for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
-            for (Part p : deleted[o]) {
-                remove(ObId(o), p);
-            }
-        }
-        auto r_to_x = rewrite::rewrite_in_place(rule, x_, m);
-        if (!r_to_x) {
-            return r_to_x;
-        }
-        // Pop-and-swap moved surviving parts into deleted slots below the count of survivors;
-        // the created parts come after them (R's order) and are named below. A moved part's
-        // entry still holds its old id: point it at the slot it sits in now.
-        for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
-            Part survivors = x_.num_parts(ObId(o)) - created_count(rule, ObId(o));
-            for (Part p : deleted[o]) {
-                if (p < survivors) {
-                    moved(ObId(o), p, survivors);
-                }
-            }
-        }
-        name_created(rule, *r_to_x, name_of);
-        return r_to_x;
-    }
-
-    /// A name for a new part of ob, starting from base, that no part of ob has: base, else
-    /// base2, base3, ... (the first free one). The search for a suffix starts at a hint per base
-    /// below which every suffix is taken, lowered when a name with a smaller suffix is freed, so
-    /// that a step costs what it creates, not the number of names sharing the base.
-    std::string fresh_name(ObId ob, const std::string& base) {
-        if (!taken(ob, base)) {
-            return base;
-        }
-        auto& hints = suffix_hints_[ob.index()];
-        auto it = hints.find(base);
-        if (it == hints.end()) {
-            it = hints.emplace(base, 2).first;
-        }
-        for (std::uint64_t k = it->second;; ++k) {
-            std::string name = fmt::format("{}{}", base, k);
-            if (!taken(ob, name)) {
-                it->second = k + 1; // the caller gives the name to a part at once
-                return name;
-            }
-        }
-    }
-
-private:
-    // Keys are views of part names, which are interned for the life of the process; a name
-    // that several parts share maps to kNoPart.
-    using Index = std::unordered_map<std::string_view, Part>;
-
-    bool taken(ObId ob, std::string_view name) const { return index_[ob.index()].count(name) > 0; }
-
-    void add(ObId ob, Part p) {
-        std::string_view n = x_.part_name(ob, p);
-        if (n.empty()) {
-            return;
-        }
-        auto [it, fresh] = index_[ob.index()].emplace(n, p);
-        if (!fresh && it->second != p) {
-            it->second = kNoPart;
-        }
-    }
-
-    // Forgets p's name (a shared name stays taken: which part keeps it is not known).
-    void remove(ObId ob, Part p) {
-        std::string_view n = x_.part_name(ob, p);
-        auto& idx = index_[ob.index()];
-        auto it = idx.find(n);
-        if (it != idx.end() && it->second == p) {
-            idx.erase(it);
-            freed(ob, n);
-        }
-    }
-
-    // The part now at slot p (p < survivors) was moved there by a pop-and-swap from an id at or
-    // above survivors. Its entry points at that old id, unless the name is shared with another
-    // surviving part (ambiguous, kNoPart, or held by a part below survivors that has the name).
-    void moved(ObId ob, Part p, Part survivors) {
-        std::string_view n = x_.part_name(ob, p);
-        if (n.empty()) {
-            return;
-        }
-        auto [it, fresh] = index_[ob.index()].emplace(n, p);
-        Part& e = it->second;
-        if (fresh || e == p) {
-            return;
-        }
-        bool shared = e == kNoPart || (e < survivors && x_.part_name(ob, e) == n);
-        e = shared ? kNoPart : p;
-    }
-
-    // A name base<k> no longer taken lowers the hint of base to k.
-    void freed(ObId ob, std::string_view name) {
-        for (auto& [base, hint] : suffix_hints_[ob.index()]) {
-            if (name.size() <= base.size() || name.substr(0, base.size()) != base) {
-                continue;
-            }
-            std::string_view digits = name.substr(base.size());
-            if (digits[0] == '0' || digits.size() > 18 ||
-                !std::all_of(digits.begin(), digits.end(),
-                             [](char c) { return c >= '0' && c <= '9'; })) {
-                continue;
-            }
-            std::uint64_t k = std::stoull(std::string(digits));
-            if (k >= 2 && k < hint) {
-                hint = k;
-            }
-        }
-    }
-
-    // The parts of ob that rule creates (R's parts outside r's image).
-    static Part created_count(const rewrite::Rule& rule, ObId ob) {
-        std::vector<bool> kept(rule.R.num_parts(ob), false);
-        for (Part k : rule.r.components[ob.index()]) {
-            kept[k] = true;
-        }
-        return static_cast<Part>(std::count(kept.begin(), kept.end(), false));
-    }
-
-    void name_created(const rewrite::Rule& rule, const ACSetMorphism& r_to_x,
-                      const std::function<std::string(ObId, Part)>& name_of) {
-        const auto& s = x_.schema();
-        for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
-            std::vector<bool> kept(rule.R.num_parts(ObId(o)), false);
-            for (Part k : rule.r.components[o]) {
-                kept[k] = true;
-            }
-            for (Part q = 0; q < kept.size(); ++q) {
-                if (!kept[q]) {
-                    Part p = r_to_x.components[o][q];
-                    x_.set_part_name(ObId(o), p, name_of(ObId(o), q));
-                    add(ObId(o), p);
-                }
-            }
-        }
-    }
-
-    ACSet x_;
-    /// Per object: name -> the parts that have it.
-    std::vector<Index> index_;
-    /// Per object: for each base fresh_name had to suffix, the smallest suffix that may be free.
-    std::vector<std::map<std::string, std::uint64_t, std::less<>>> suffix_hints_;
-};
 
 // Names every unnamed part after its label (#7), so that names can follow every part.
 ACSet named(const ACSet& x) {
@@ -389,6 +204,9 @@ public:
         out_.timings.migrate_ms = ms_since(t0);
         x_.emplace(std::move(x0));
         y_.emplace(std::move(y0));
+        if (options_.check_divergence || options_.follow_source) {
+            check_.emplace(f_, renaming_);
+        }
         keep_states();
         t0 = Clock::now();
         for (std::size_t i = 0; i < plan_.steps.size(); ++i) {
@@ -399,6 +217,7 @@ public:
         }
         out_.timings.apply_ms = ms_since(t0);
         auto source = finish_source();
+        out_.whole_comparisons = check_ ? check_->whole_comparisons() : 0;
         out_.final_state = std::move(*y_).release();
         y_.reset();
         return source;
@@ -464,9 +283,12 @@ private:
         StepTransfer st;
         st.source = s;
         st.target = step_of(*a->target, matches[0], y_->state());
-        st.source_bindings = plan::describe_match(*m, a->source->L, x_->state());
-        st.target_bindings = plan::describe_match(matches[0], a->target->L, y_->state());
+        st.source_bindings = describe_bindings(*m, a->source->L, x_->state());
+        st.target_bindings = describe_bindings(matches[0], a->target->L, y_->state());
         st.lost_parameters = lost_parameters(*a->source, *a->target);
+        if (comparing()) {
+            check_->before(*m, *x_, matches[0], *y_);
+        }
         // A created part is named after its generator in the rule, or after its object and the
         // step that created it (block@2).
         auto r_to_x = x_->apply(*a->source, *m, [&](ObId ob, Part q) {
@@ -489,10 +311,34 @@ private:
         if (!applied) {
             return fail_at(i, applied.error());
         }
+        if (comparing()) {
+            if (auto d = check_->after(i, *r_to_x, *x_, *applied, *y_)) {
+                d->where = where(i);
+                out_.verdict.divergences.push_back(std::move(*d));
+            }
+        }
+        if (options_.follow_source) {
+            follow_source();
+        }
         st.source_match = std::move(*m);
         st.target_match = std::move(matches[0]);
         out_.steps.push_back(std::move(st));
         return true;
+    }
+
+    // Whether this step's target state is compared with Δ_F of the source state: every step
+    // when following the source, else until the first divergence (the later target states are
+    // not comparable with the source's).
+    bool comparing() const {
+        return check_ && (options_.follow_source || out_.verdict.divergences.empty());
+    }
+
+    // Y_i := Δ_F(X_i), named as Y_0 was.
+    void follow_source() {
+        ACSet z = migrate::migrate(f_, x_->state());
+        rename_parts(z, renaming_);
+        y_.emplace(std::move(z));
+        check_->reset();
     }
 
     std::string migration_failure(const std::string& action) const {
@@ -546,16 +392,74 @@ private:
     TransferResult& out_;
     Renaming renaming_;
     std::optional<NamedState> x_, y_;
+    std::optional<DivergenceCheck> check_;
     std::map<std::string, ActionPair, std::less<>> actions_;
 };
 
-// The claim of Appendix A: a delta map preserves pushouts, so each migrated DPO step applies
-// and Y_i = Δ_F(X_i).
-Claim valid_by_construction(MigrationKind migration) {
+// What makes f conjunctive, named: the first target object sent to a query, hom sent to a
+// query's variable or attribute sent to a value.
+std::string not_delta(const SchemaMap& f) {
+    const auto& t = *f.target();
+    for (std::uint32_t c = 0; c < t.num_obs(); ++c) {
+        if (!f.query(ObId(c)).is_plain()) {
+            return fmt::format("it sends {} to a query", t.ob(ObId(c)).name);
+        }
+    }
+    for (std::uint32_t h = 0; h < t.num_homs(); ++h) {
+        if (!f.hom_image(HomId(h)).path) {
+            return fmt::format("it sends {} to a variable of a query", t.hom(HomId(h)).name);
+        }
+    }
+    for (std::uint32_t a = 0; a < t.num_attrs(); ++a) {
+        if (f.attr_image(AttrId(a)).kind == migrate::AttrImage::Kind::Value) {
+            return fmt::format("it sends {} to a computed value", t.attr(AttrId(a)).name);
+        }
+    }
+    return "it is not a delta map";
+}
+
+// The claim of Appendix A and its hypotheses: Δ_F preserves pushouts for a delta map, so each
+// migrated DPO step at a monic match applies and Y_i = Δ_F(X_i), and the goal of a valid source
+// plan embeds. An application condition is not preserved (Δ_F is not full: the migrated NAC may
+// see less than the source NAC), nor is SPO's deletion of dangling parts.
+Claim valid_by_construction(const SchemaMap& f, const TransferResult& out,
+                            const plan::Problem& problem, const plan::Plan& plan) {
     Claim c;
     c.kind = Claim::Kind::ValidByConstruction;
+    bool delta = out.migration == MigrationKind::Delta;
     c.hypotheses.push_back(
-        {"F is a delta map (Δ_F preserves pushouts)", migration == MigrationKind::Delta});
+        {"F is a delta map (Δ_F preserves pushouts)", delta, delta ? "" : not_delta(f)});
+    std::string conditions, spo;
+    for (const auto& step : plan.steps) {
+        const auto* rule = problem.domain->find_rule(step.action);
+        if (rule == nullptr) {
+            continue;
+        }
+        if (conditions.empty() && !rule->conditions.empty()) {
+            conditions = fmt::format("rule {} has a {} application condition", rule->name,
+                                     rule->conditions.front().negative ? "negative" : "positive");
+        }
+        if (spo.empty() && rule->semantics == rewrite::Semantics::SPO) {
+            spo = fmt::format("rule {} deletes dangling parts (SPO)", rule->name);
+        }
+    }
+    c.hypotheses.push_back({"no rule the plan uses has an application condition (Δ_F does not "
+                            "preserve them)",
+                            conditions.empty(), conditions});
+    c.hypotheses.push_back({"every rule the plan uses is a DPO rule", spo.empty(), spo});
+    std::string not_monic;
+    for (std::size_t i = 0; i < out.steps.size() && not_monic.empty(); ++i) {
+        for (auto component : out.steps[i].source_match.components) {
+            std::sort(component.begin(), component.end());
+            if (std::adjacent_find(component.begin(), component.end()) != component.end()) {
+                not_monic = fmt::format("the match of step {} identifies parts", i + 1);
+            }
+        }
+    }
+    c.hypotheses.push_back({"every match is monic", not_monic.empty(), not_monic});
+    const Fault* source = out.verdict.find(Fault::Kind::SourcePlan);
+    c.hypotheses.push_back({"the source plan is valid", source == nullptr,
+                            source ? headline(*source) : std::string()});
     return c;
 }
 
@@ -565,6 +469,14 @@ void judge(TransferResult& out, const ACSet& y, std::optional<Fault> source,
            const TransferOptions& options) {
     auto t0 = Clock::now();
     Verdict& v = out.verdict;
+    v.trajectory = options.follow_source ? Trajectory::FollowSource : Trajectory::Own;
+    if (options.strict) {
+        for (const auto& d : v.divergences) {
+            v.faults.push_back(
+                {Fault::Kind::Divergence, d.step, d.where,
+                 fmt::format("the target state is not Δ_F(X{}): {}", d.step + 1, d.difference())});
+        }
+    }
     auto embedding = plan::embed_goal(*out.target_goal, y);
     if (!embedding) {
         v.faults.push_back(
@@ -591,7 +503,6 @@ void judge(TransferResult& out, const ACSet& y, std::optional<Fault> source,
         v.goal = goal_satisfaction(*out.target_goal, y);
     }
     v.status = v.faults.empty() ? Verdict::Status::Valid : Verdict::Status::Invalid;
-    v.claims = {valid_by_construction(out.migration)};
     out.timings.validate_ms = ms_since(t0);
 }
 
@@ -627,6 +538,7 @@ TransferResult transfer_plan(const SchemaMap& f, const plan::Problem& problem,
     out.migration = f.is_delta() ? MigrationKind::Delta : MigrationKind::Conjunctive;
     auto source = Transfer(f, problem, plan, options, out).run();
     judge(out, *out.final_state, std::move(source), options);
+    out.verdict.claims = {valid_by_construction(f, out, problem, plan)};
     out.timings.total_ms = ms_since(t0);
     return out;
 }
@@ -690,6 +602,21 @@ Replan replan(const TransferResult& t, const plan::SearchOptions& options) {
     }
     out.edit_distance = edit_distance(transferred, out.steps);
     return out;
+}
+
+bool hit_limit(const Replan& r) {
+    auto st = r.search.status;
+    return st == plan::SearchStatus::NodeLimit || st == plan::SearchStatus::TimeLimit ||
+           st == plan::SearchStatus::MemoryLimit;
+}
+
+std::string speedup_text(const Replan& r, double transfer_ms) {
+    double ratio = r.ms / std::max(transfer_ms, 1e-6);
+    if (hit_limit(r)) {
+        return fmt::format("> {:.0f}x (replanning hit its {})", ratio,
+                           plan::to_string(r.search.status));
+    }
+    return fmt::format("{:.0f}x", ratio);
 }
 
 } // namespace catplan::transfer
