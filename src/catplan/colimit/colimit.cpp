@@ -141,6 +141,25 @@ std::string describe_value(const Value& v) {
 
 } // namespace
 
+std::vector<std::vector<Part>> parts_outside_image(const ACSetMorphism& f, const ACSet& codom) {
+    const auto& s = codom.schema();
+    std::vector<std::vector<Part>> out(s.num_obs());
+    for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
+        std::vector<char> hit(codom.num_parts(ObId(o)), 0);
+        if (o < f.components.size()) {
+            for (Part p : f.components[o]) {
+                hit[p] = 1;
+            }
+        }
+        for (Part p = 0; p < hit.size(); ++p) {
+            if (!hit[p]) {
+                out[o].push_back(p);
+            }
+        }
+    }
+    return out;
+}
+
 Coproduct coproduct(const ACSet& b, const ACSet& c) {
     ACSet a(b.schema_ptr());
     ACSetMorphism f = hom::identity(a), g = hom::identity(a);
@@ -287,18 +306,23 @@ std::vector<GluingViolation> gluing_violations(const ACSet& k, const ACSet& l_st
     const auto& s = x.schema();
     std::vector<GluingViolation> out;
     std::vector<std::vector<bool>> deleted(s.num_obs());
+    auto outside = parts_outside_image(l, l_state);
     for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
         ObId ob(o);
-        std::vector<bool> kept(l_state.num_parts(ob), false);
+        std::vector<bool> kept(l_state.num_parts(ob), true);
+        for (Part p : outside[o]) {
+            kept[p] = false;
+        }
+        std::vector<bool> seen(l_state.num_parts(ob), false);
         for (Part p = 0; p < k.num_parts(ob); ++p) {
-            if (kept[l(ob, p)]) {
+            if (seen[l(ob, p)]) {
                 out.push_back({GluingViolationKind::NotMonic, ob, l(ob, p), kNoPart, HomId(),
                                kNoPart,
                                fmt::format("the rule's left leg is not monic: two parts of {} "
                                            "are kept as {}",
                                            s.ob(ob).name, l_state.part_label(ob, l(ob, p)))});
             }
-            kept[l(ob, p)] = true;
+            seen[l(ob, p)] = true;
         }
         // Identification: a deleted part of L shares its image with another part of L.
         std::vector<Part> first_preimage(x.num_parts(ob), kNoPart);
@@ -356,24 +380,12 @@ Result<PushoutComplement> pushout_complement(const ACSet& k, const ACSet& l_stat
     }
     const auto& s = x.schema();
     std::vector<std::vector<bool>> deleted(s.num_obs());
+    auto outside = parts_outside_image(l, l_state);
     for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
         ObId ob(o);
-        deleted[o].assign(x.num_parts(ob), true);
-        std::vector<bool> kept(l_state.num_parts(ob), false);
-        for (Part p = 0; p < k.num_parts(ob); ++p) {
-            kept[l(ob, p)] = true;
-        }
-        std::vector<bool> hit(x.num_parts(ob), false);
-        for (Part p = 0; p < l_state.num_parts(ob); ++p) {
-            hit[m(ob, p)] = true;
-            if (kept[p]) {
-                deleted[o][m(ob, p)] = false;
-            }
-        }
-        for (Part p = 0; p < x.num_parts(ob); ++p) {
-            if (!hit[p]) {
-                deleted[o][p] = false;
-            }
+        deleted[o].assign(x.num_parts(ob), false);
+        for (Part p : outside[o]) {
+            deleted[o][m(ob, p)] = true; // no kept part shares the image (identification holds)
         }
     }
     PushoutComplement out{ACSet(x.schema_ptr()), {}, {}};

@@ -37,6 +37,10 @@ struct Coproduct {
     ACSetMorphism right; // C -> B + C
 };
 
+/// Per object, the parts of `codom` outside the image of f, in increasing order: for a rule's
+/// l : K -> L the parts it deletes, for r : K -> R the parts it creates.
+std::vector<std::vector<Part>> parts_outside_image(const ACSetMorphism& f, const ACSet& codom);
+
 /// The coproduct B + C: B's parts then C's parts, B's variables then C's.
 Coproduct coproduct(const ACSet& b, const ACSet& c);
 

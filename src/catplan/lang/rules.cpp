@@ -2,6 +2,7 @@
 // NAC and PAC (or the slides' L, K, R, l, r) are partial presentations; L, K and R are their
 // states, l : K -> L and r : K -> R the unique morphisms their generators' names determine.
 
+#include "catplan/colimit/colimit.hpp"
 #include "catplan/hom/hom_search.hpp"
 #include "catplan/lang/detail/colimit.hpp"
 #include "catplan/lang/detail/elaboration.hpp"
@@ -645,15 +646,10 @@ private:
     bool complete_created(ACSet& r_state, const hom::ACSetMorphism& r, SourceRange at) {
         const Schema& s = r_state.schema();
         std::vector<std::pair<ObId, Part>> work;
+        auto created = colimit::parts_outside_image(r, r_state);
         for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
-            std::vector<bool> kept(r_state.num_parts(ObId(o)), false);
-            for (Part p : r.components[o]) {
-                kept[p] = true;
-            }
-            for (Part p = 0; p < kept.size(); ++p) {
-                if (!kept[p]) {
-                    work.emplace_back(ObId(o), p);
-                }
+            for (Part p : created[o]) {
+                work.emplace_back(ObId(o), p);
             }
         }
         std::size_t fresh = 0;

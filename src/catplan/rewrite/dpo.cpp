@@ -20,9 +20,9 @@ struct Shape {
     explicit Shape(const Rule& rule);
 
     const Rule& rule;
-    std::vector<std::vector<Part>> k_of_l; // per ob, per L part: the K part kept as it, or kNoPart
-    std::vector<std::vector<Part>> k_of_r; // per ob, per R part: the first K part sent to it
-    std::vector<std::uint32_t> unset_in_l; // per hom: L parts whose value is unset
+    std::vector<std::vector<char>> deletes; // per ob, per L part: whether the rule deletes it
+    std::vector<std::vector<Part>> k_of_r;  // per ob, per R part: the first K part sent to it
+    std::vector<std::uint32_t> unset_in_l;  // per hom: L parts whose value is unset
     std::vector<std::vector<std::uint32_t>> l_incident; // per hom, per L part: |L.incident(h, p)|
     bool r_monic = true;
     /// Whether, for a monic match, the pruning in find_matches already implies the dangling
@@ -31,7 +31,7 @@ struct Shape {
     /// keeps with a hom that L and K agree on.
     bool dangling_by_counts = true;
 
-    bool deleted(ObId o, Part p) const { return k_of_l[o.index()][p] == kNoPart; }
+    bool deleted(ObId o, Part p) const { return deletes[o.index()][p] != 0; }
 
     /// Whether kept K part k has hom h redirected by the rule (unset in K, set in R).
     bool redirects(HomId h, Part k) const {
@@ -44,10 +44,12 @@ Shape::Shape(const Rule& r) : rule(r) {
     const auto& s = r.L.schema();
     for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
         ObId ob(o);
-        k_of_l.emplace_back(r.L.num_parts(ob), kNoPart);
+        deletes.emplace_back(r.L.num_parts(ob), 0);
+        for (Part p : r.deleted_parts(ob)) {
+            deletes[o][p] = 1;
+        }
         k_of_r.emplace_back(r.R.num_parts(ob), kNoPart);
         for (Part k = 0; k < r.K.num_parts(ob); ++k) {
-            k_of_l[o][r.l(ob, k)] = k;
             Part rp = r.r(ob, k);
             if (k_of_r[o][rp] != kNoPart) {
                 r_monic = false;
@@ -87,10 +89,8 @@ std::vector<std::vector<Part>> deleted_parts(const Shape& shape, const ACSetMorp
     const auto& s = shape.rule.L.schema();
     std::vector<std::vector<Part>> out(s.num_obs());
     for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
-        for (Part p = 0; p < shape.k_of_l[o].size(); ++p) {
-            if (shape.k_of_l[o][p] == kNoPart) {
-                out[o].push_back(m(ObId(o), p));
-            }
+        for (Part p : shape.rule.deleted_parts(ObId(o))) {
+            out[o].push_back(m(ObId(o), p));
         }
         std::sort(out[o].begin(), out[o].end());
         out[o].erase(std::unique(out[o].begin(), out[o].end()), out[o].end());
@@ -405,12 +405,10 @@ Result<InPlaceOutcome> apply_in_place(const Shape& shape, ACSet& x, const ACSetM
     // Create R's new parts in R's order.
     for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
         ObId ob(o);
-        for (Part rp = 0; rp < rule.R.num_parts(ob); ++rp) {
-            if (r_to_x[o][rp] == kNoPart) {
-                r_to_x[o][rp] = x.add_part(ob, rule.R.part_name(ob, rp));
-                if (track_origin) {
-                    out.origin[o].push_back(kNoPart);
-                }
+        for (Part rp : rule.created_parts(ob)) {
+            r_to_x[o][rp] = x.add_part(ob, rule.R.part_name(ob, rp));
+            if (track_origin) {
+                out.origin[o].push_back(kNoPart);
             }
         }
     }
