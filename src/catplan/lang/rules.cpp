@@ -190,9 +190,9 @@ public:
           schema_(src.schema),
           sink_(&ctx.sink),
           errors_(ctx.sink.num_errors()),
-          lc_(*schema_, ctx.inferred_kinds(*schema_)),
-          rc_(*schema_, ctx.inferred_kinds(*schema_)),
-          kc_(*schema_, ctx.inferred_kinds(*schema_)) {
+          lc_(schema_, ctx.inferred_kinds(*schema_)),
+          rc_(schema_, ctx.inferred_kinds(*schema_)),
+          kc_(schema_, ctx.inferred_kinds(*schema_)) {
         pre_name_ = src.span_form ? "L" : "Pre";
         keep_name_ = src.span_form ? "K" : "Keep";
         eff_name_ = src.span_form ? "R" : "Eff";
@@ -205,13 +205,13 @@ public:
         if (failed()) {
             return nullptr;
         }
-        ACSet L = lc_.build_partial(schema_);
+        ACSet L = lc_.build_partial();
         for (auto& [st, e] : translated_) {
             fix_inputs(lc_, e);
             // After fix_inputs: a cell Pre fixes is a constant too.
             check_constants(e, value_side(*st).range, *sink_);
         }
-        ACSet R = rc_.build_partial(schema_);
+        ACSet R = rc_.build_partial();
         elaborate_keep();
         if (failed()) {
             return nullptr;
@@ -220,7 +220,7 @@ public:
         rule->name = src_.name;
         rule->range = src_.name_range;
         rule->L = std::move(L);
-        rule->K = kc_.build_partial(schema_);
+        rule->K = kc_.build_partial();
         rule->R = std::move(R);
         if (!legs(*rule)) {
             return nullptr;
@@ -280,7 +280,7 @@ private:
         std::vector<const Expr*> expr_stmts;
         {
             // Collect Eff's expression statements first (R's elaboration reports the rest).
-            Colimit scratch(*schema_, ctx_.inferred_kinds(*schema_));
+            Colimit scratch(schema_, ctx_.inferred_kinds(*schema_));
             with_sink(false, [&] { equations_all(scratch, eff_, false, &expr_stmts); });
         }
         for (const Expr* st : expr_stmts) {
@@ -397,7 +397,7 @@ private:
 
     // An application condition: N = Pre ∪ the condition's statements; n : L -> N by names.
     bool condition(rewrite::Rule& rule, const RuleBlock& b) {
-        Colimit nc(*schema_, ctx_.inferred_kinds(*schema_));
+        Colimit nc(schema_, ctx_.inferred_kinds(*schema_));
         nc.allow_redeclare();
         declare_all(nc, pre_, false);
         declare_all(nc, &b, true);
@@ -412,7 +412,7 @@ private:
         if (failed()) {
             return false;
         }
-        ACSet N = nc.build_partial(schema_);
+        ACSet N = nc.build_partial();
         hom::HomSearchOptions nopt;
         if (!bind_names(lc_, nc, nullptr, pre_name_, b.name, nopt)) {
             return false;
