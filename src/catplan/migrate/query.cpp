@@ -66,21 +66,15 @@ bool Query::add_value_variable(std::string name, AttrTypeId type, SourceRange ra
     return true;
 }
 
-colimit::Node Query::follow_hom(colimit::Node from, HomId h, Origin origin) {
-    std::size_t before = shape_.num_part_nodes();
-    colimit::Node to = shape_.hom(from, h);
-    if (shape_.num_part_nodes() > before) {
-        part_origin_.push_back(std::move(origin));
-        built_.reset();
-    }
-    return to;
-}
-
-colimit::Node Query::follow_attr(colimit::Node from, AttrId a, Origin origin) {
-    std::size_t before = shape_.num_value_nodes();
-    colimit::Node to = shape_.attr(from, a);
-    if (shape_.num_value_nodes() > before) {
-        value_origin_.push_back(std::move(origin));
+// The last step of `origin` (its attribute, else its last hom) from `from`; a node it makes
+// remembers `origin`.
+colimit::Node Query::follow(colimit::Node from, Origin origin) {
+    bool is_attr = origin.attr.has_value();
+    colimit::Node to =
+        is_attr ? shape_.attr(from, *origin.attr) : shape_.hom(from, origin.homs.back());
+    auto& origins = is_attr ? value_origin_ : part_origin_;
+    if ((is_attr ? shape_.num_value_nodes() : shape_.num_part_nodes()) > origins.size()) {
+        origins.push_back(std::move(origin));
         built_.reset();
     }
     return to;
@@ -123,7 +117,7 @@ std::optional<Query::Resolved> Query::resolve(const Term& t, SourceRange where) 
         }
         prefix.push_back(h);
         ob = s.hom(h).codom;
-        cur = follow_hom(cur, h, {var, prefix, std::nullopt});
+        cur = follow(cur, {var, prefix, std::nullopt});
     }
     if (t.attr) {
         if (s.attr(*t.attr).dom != ob) {
@@ -132,7 +126,7 @@ std::optional<Query::Resolved> Query::resolve(const Term& t, SourceRange where) 
                                  at});
             return std::nullopt;
         }
-        return Resolved{Handle{true, follow_attr(cur, *t.attr, {var, prefix, t.attr})}, Value()};
+        return Resolved{Handle{true, follow(cur, {var, prefix, t.attr})}, Value()};
     }
     return Resolved{Handle{false, cur}, Value()};
 }

@@ -154,8 +154,7 @@ private:
     };
 
     std::optional<Resolved> resolve(const Term& t, SourceRange where);
-    colimit::Node follow_hom(colimit::Node from, HomId h, Origin origin);
-    colimit::Node follow_attr(colimit::Node from, AttrId a, Origin origin);
+    colimit::Node follow(colimit::Node from, Origin origin);
     void take_problems();
     QueryElement locate(const Handle& h) const;
     void build() const;
