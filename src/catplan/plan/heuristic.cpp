@@ -257,9 +257,9 @@ private:
                 for (Part k = 0; k < rule->K.num_parts(dom); ++k) {
                     k_of_r[rule->r(dom, k)] = k;
                 }
-                std::vector<bool> kept_target(rule->R.num_parts(cod), false);
-                for (Part k = 0; k < rule->K.num_parts(cod); ++k) {
-                    kept_target[rule->r(cod, k)] = true;
+                std::vector<bool> kept_target(rule->R.num_parts(cod), true);
+                for (Part c : rule->created_parts(cod)) {
+                    kept_target[c] = false;
                 }
                 for (Part q = 0; q < rule->R.num_parts(dom); ++q) {
                     Part t = rule->R.subpart(f, q);
@@ -285,14 +285,7 @@ private:
                    const ACSet& init, ObId ob, Part p) const {
         const auto& s = *schema_;
         for (const auto& rule : rules) {
-            std::vector<bool> kept(rule->L.num_parts(ob), false);
-            for (Part k = 0; k < rule->K.num_parts(ob); ++k) {
-                kept[rule->l(ob, k)] = true;
-            }
-            for (Part d = 0; d < rule->L.num_parts(ob); ++d) {
-                if (kept[d]) {
-                    continue;
-                }
+            for (Part d : rule->deleted_parts(ob)) {
                 bool excluded = false;
                 for (HomId f : s.homs_into(ob)) {
                     if (!gained[f.index()] && !rule->L.incident(f, d).empty() &&

@@ -6,19 +6,6 @@
 #include <fmt/format.h>
 
 namespace catplan::transfer {
-namespace {
-
-// The parts of ob that rule creates (R's parts outside r's image).
-Part created_count(const rewrite::Rule& rule, ObId ob) {
-    std::vector<bool> kept(rule.R.num_parts(ob), false);
-    for (Part k : rule.r.components[ob.index()]) {
-        kept[k] = true;
-    }
-    return static_cast<Part>(std::count(kept.begin(), kept.end(), false));
-}
-
-} // namespace
-
 NamedState::NamedState(acset::ACSet x)
     : x_(std::move(x)), index_(x_.schema().num_obs()), suffix_hints_(index_.size()) {
     for (std::uint32_t o = 0; o < index_.size(); ++o) {
@@ -33,17 +20,11 @@ Result<hom::ACSetMorphism>
 NamedState::apply(const rewrite::Rule& rule, const hom::ACSetMorphism& m,
                   const std::function<std::string(ObId, Part)>& name_of) {
     const auto& s = x_.schema();
-    // The parts to be deleted: matched parts of L outside l's image.
+    // The parts to be deleted: the images of the parts the rule deletes.
     std::vector<std::vector<Part>> deleted(s.num_obs());
     for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
-        std::vector<bool> kept(rule.L.num_parts(ObId(o)), false);
-        for (Part k : rule.l.components[o]) {
-            kept[k] = true;
-        }
-        for (Part p = 0; p < kept.size(); ++p) {
-            if (!kept[p]) {
-                deleted[o].push_back(m.components[o][p]);
-            }
+        for (Part p : rule.deleted_parts(ObId(o))) {
+            deleted[o].push_back(m.components[o][p]);
         }
     }
     for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
@@ -59,7 +40,8 @@ NamedState::apply(const rewrite::Rule& rule, const hom::ACSetMorphism& m,
     // the created parts come after them (R's order) and are named below. A moved part's
     // entry still holds its old id: point it at the slot it sits in now.
     for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
-        Part survivors = x_.num_parts(ObId(o)) - created_count(rule, ObId(o));
+        auto survivors =
+            static_cast<Part>(x_.num_parts(ObId(o)) - rule.created_parts(ObId(o)).size());
         for (Part p : deleted[o]) {
             if (p < survivors) {
                 moved(ObId(o), p, survivors);
@@ -150,16 +132,10 @@ void NamedState::name_created(const rewrite::Rule& rule, const hom::ACSetMorphis
                               const std::function<std::string(ObId, Part)>& name_of) {
     const auto& s = x_.schema();
     for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
-        std::vector<bool> kept(rule.R.num_parts(ObId(o)), false);
-        for (Part k : rule.r.components[o]) {
-            kept[k] = true;
-        }
-        for (Part q = 0; q < kept.size(); ++q) {
-            if (!kept[q]) {
-                Part p = r_to_x.components[o][q];
-                x_.set_part_name(ObId(o), p, name_of(ObId(o), q));
-                add(ObId(o), p);
-            }
+        for (Part q : rule.created_parts(ObId(o))) {
+            Part p = r_to_x.components[o][q];
+            x_.set_part_name(ObId(o), p, name_of(ObId(o), q));
+            add(ObId(o), p);
         }
     }
 }
