@@ -114,7 +114,7 @@ struct Rule {
     SourceRange range;
 
     /// A rule with empty states on a schema (to be filled by a builder or the elaborator).
-    explicit Rule(schema::SchemaPtr s) : L(s), K(s), R(s) {}
+    explicit Rule(const schema::SchemaPtr& s) : L(s), K(s), R(s) {}
 
     /// The parts of L at ob outside l(K), in increasing order: what the rule deletes.
     const std::vector<Part>& deleted_parts(ObId ob) const { return anatomy().deleted[ob.index()]; }
