@@ -53,40 +53,57 @@ private:
     const Task& task_;
 };
 
-// A bucket queue of propositions by cost (Dial's algorithm): costs only grow while popping.
-class BucketQueue {
+// Propositions by cost, for a Dijkstra in which costs only grow while popping: buckets for small
+// costs (Dial's algorithm), a binary heap for the rare large ones (h_add's sums).
+class AdaptiveQueue {
 public:
     void clear() {
-        for (auto& b : buckets_) {
-            b.clear();
+        for (std::size_t i = 0; i < used_; ++i) {
+            buckets_[i].clear();
         }
-        current_ = 0;
-        size_ = 0;
+        heap_.clear();
+        current_ = used_ = size_ = 0;
     }
 
     void push(int cost, Prop p) {
-        if (static_cast<std::size_t>(cost) >= buckets_.size()) {
-            buckets_.resize(static_cast<std::size_t>(cost) + 1);
+        auto c = static_cast<std::size_t>(cost);
+        if (c < kBuckets) {
+            if (c >= buckets_.size()) {
+                buckets_.resize(std::min(kBuckets, 2 * c + 16));
+            }
+            buckets_[c].push_back(p);
+            used_ = std::max(used_, c + 1);
+            current_ = std::min(current_, c);
+        } else {
+            heap_.push_back({cost, p});
+            std::push_heap(heap_.begin(), heap_.end(), std::greater<>());
         }
-        buckets_[static_cast<std::size_t>(cost)].push_back(p);
         ++size_;
     }
 
     bool empty() const { return size_ == 0; }
 
     std::pair<int, Prop> pop() {
-        while (buckets_[current_].empty()) {
+        --size_;
+        while (current_ < used_ && buckets_[current_].empty()) {
             ++current_;
         }
-        Prop p = buckets_[current_].back();
-        buckets_[current_].pop_back();
-        --size_;
-        return {static_cast<int>(current_), p};
+        if (current_ < used_) {
+            Prop p = buckets_[current_].back();
+            buckets_[current_].pop_back();
+            return {static_cast<int>(current_), p};
+        }
+        std::pop_heap(heap_.begin(), heap_.end(), std::greater<>());
+        auto top = heap_.back();
+        heap_.pop_back();
+        return top;
     }
 
 private:
+    static constexpr std::size_t kBuckets = 1 << 14;
     std::vector<std::vector<Prop>> buckets_;
-    std::size_t current_ = 0, size_ = 0;
+    std::vector<std::pair<int, Prop>> heap_;
+    std::size_t current_ = 0, used_ = 0, size_ = 0;
 };
 
 // h_add, h_max and h_FF: a generalised Dijkstra over the propositions from the state's.
@@ -189,6 +206,7 @@ private:
             }
             if (preferred != nullptr && applicable && actions[a].action != kNone) {
                 preferred->push_back(actions[a].action);
+                preferred->insert(preferred->end(), actions[a].also.begin(), actions[a].also.end());
             }
         }
         return std::min(h, kDeadEnd - 1);
@@ -201,7 +219,7 @@ private:
     std::vector<std::uint32_t> supporter_, unsat_;
     std::vector<Prop> init_, stack_;
     std::vector<char> in_plan_, marked_;
-    BucketQueue queue_;
+    AdaptiveQueue queue_;
 };
 
 } // namespace

@@ -340,6 +340,7 @@ private:
                 });
                 if (ok) {
                     out.push_back(act.action);
+                    out.insert(out.end(), act.also.begin(), act.also.end());
                 }
             }
         }

@@ -1,7 +1,11 @@
 #pragma once
 // The delete relaxation of a ground task, shared by its heuristics: one proposition per variable
-// value, one relaxed action per ground action (its preconditions; its effects as adds; forbidden
-// facts and negative conditions dropped, exits left out: a relaxation of the task), unit costs.
+// value; per ground action its preconditions and its effects as adds, unit costs, with forbidden
+// facts and negative conditions dropped and exits left out. Facts that a two-valued variable
+// (presence of an atom or a slot) is absent are dropped from preconditions and effects, as STRIPS
+// relaxations drop deletes and negative preconditions. Then an action is dropped when another
+// needs no more and adds no less (PDDL's rule variants, import.hpp, collapse to one): each
+// relaxed action lists the ground actions it stands for, so preferred operators name them all.
 // A goal with several terms gets one more proposition, the goal, and a zero-cost action per term
 // that adds it, so every heuristic sees one conjunction.
 
@@ -17,6 +21,7 @@ struct RelaxedAction {
     std::vector<Prop> pre, add;
     int cost = 1;
     ActionId action = kNone; // the ground action, or kNone for a goal action
+    std::vector<ActionId> also; // the ground actions it stands for besides `action`
 };
 
 class RelaxedTask {
@@ -49,6 +54,8 @@ public:
     std::uint32_t relaxed_of(ActionId a) const { return relaxed_of_[a]; }
 
 private:
+    void drop_dominated(const Task& task);
+
     std::vector<std::uint32_t> offset_;
     std::uint32_t num_props_ = 0, var_props_ = 0;
     std::vector<RelaxedAction> actions_;
