@@ -131,7 +131,8 @@ BENCHMARK_CAPTURE(BM_Evaluate, hff, plan::HeuristicKind::HFF)->Unit(benchmark::k
 BENCHMARK_CAPTURE(BM_Evaluate, hadd, plan::HeuristicKind::HAdd)->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(BM_Evaluate, hmax, plan::HeuristicKind::HMax)->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(BM_Evaluate, lmcut, plan::HeuristicKind::LmCut)->Unit(benchmark::kMicrosecond);
-BENCHMARK_CAPTURE(BM_Evaluate, lmcount, plan::HeuristicKind::LmCount)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_Evaluate, lmcount, plan::HeuristicKind::LmCount)
+    ->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_Successors)->Unit(benchmark::kMicrosecond);
 
 } // namespace

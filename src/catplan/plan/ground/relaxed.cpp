@@ -96,7 +96,8 @@ void RelaxedTask::drop_dominated(const Task& task) {
     }
     std::vector<char> gone(actions_.size(), 0);
     auto dominates = [&](const RelaxedAction& a, const RelaxedAction& b) {
-        return a.cost <= b.cost && std::includes(b.pre.begin(), b.pre.end(), a.pre.begin(), a.pre.end()) &&
+        return a.cost <= b.cost &&
+               std::includes(b.pre.begin(), b.pre.end(), a.pre.begin(), a.pre.end()) &&
                std::includes(a.add.begin(), a.add.end(), b.add.begin(), b.add.end());
     };
     for (const auto& [key, members] : groups) {

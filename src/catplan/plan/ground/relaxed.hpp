@@ -20,7 +20,7 @@ using Prop = std::uint32_t;
 struct RelaxedAction {
     std::vector<Prop> pre, add;
     int cost = 1;
-    ActionId action = kNone; // the ground action, or kNone for a goal action
+    ActionId action = kNone;    // the ground action, or kNone for a goal action
     std::vector<ActionId> also; // the ground actions it stands for besides `action`
 };
 
