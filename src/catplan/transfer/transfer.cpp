@@ -15,7 +15,6 @@
 #include <functional>
 #include <map>
 #include <string>
-#include <sys/resource.h>
 #include <unordered_map>
 
 namespace catplan::transfer {
@@ -567,14 +566,6 @@ std::size_t edit_distance(const std::vector<plan::Step>& a, const std::vector<pl
         }
     }
     return row[b.size()];
-}
-
-long peak_rss_kib() {
-    rusage usage{};
-    if (getrusage(RUSAGE_SELF, &usage) != 0) {
-        return 0;
-    }
-    return usage.ru_maxrss;
 }
 
 Replan replan(const TransferResult& t, const plan::SearchOptions& options) {

@@ -35,6 +35,7 @@
 //   if (!t.verdict.valid()) std::cout << t.verdict.reason() << "\n";
 
 #include "catplan/acset/acset.hpp"
+#include "catplan/base/process.hpp"
 #include "catplan/hom/morphism.hpp"
 #include "catplan/migrate/schema_map.hpp"
 #include "catplan/plan/domain.hpp"
@@ -170,7 +171,7 @@ std::string speedup_text(const Replan& r, double transfer_ms);
 /// steps).
 std::size_t edit_distance(const std::vector<plan::Step>& a, const std::vector<plan::Step>& b);
 
-/// The process's peak resident memory in KiB (0 when unknown).
-long peak_rss_kib();
+/// The process's peak resident memory in KiB (0 when unknown); base/process.hpp.
+using catplan::peak_rss_kib;
 
 } // namespace catplan::transfer
