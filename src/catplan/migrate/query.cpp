@@ -31,6 +31,25 @@ Query Query::representable(SchemaPtr source, ObId ob, std::string name) {
     return q;
 }
 
+std::optional<std::size_t> Query::first_object_node() const {
+    for (std::size_t i = 0; i < nodes_.size(); ++i) {
+        if (!nodes_[i].is_value) {
+            return i;
+        }
+    }
+    return std::nullopt;
+}
+
+Part follow(const ACSet& x, Part p, const std::vector<HomId>& homs) {
+    for (HomId h : homs) {
+        if (p == kNoPart) {
+            return kNoPart;
+        }
+        p = x.subpart(h, p);
+    }
+    return p;
+}
+
 std::optional<std::size_t> Query::find_node(std::string_view name) const {
     for (std::size_t i = 0; i < nodes_.size(); ++i) {
         if (nodes_[i].name == name) {

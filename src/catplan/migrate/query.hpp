@@ -113,6 +113,9 @@ public:
     /// The index of the variable with this name.
     std::optional<std::size_t> find_node(std::string_view name) const;
 
+    /// The first object variable, if any (the one a tuple of the query is named after).
+    std::optional<std::size_t> first_object_node() const;
+
     /// Every problem met while building, in order.
     const std::vector<QueryProblem>& problems() const { return problems_; }
 
@@ -175,5 +178,8 @@ private:
     mutable std::vector<std::vector<colimit::Node>> reps_;  // per ob: the node of each part
     mutable std::vector<std::vector<colimit::Node>> vreps_; // per type: the node of each var
 };
+
+/// The part reached from p along a path of x's homs, or kNoPart once a hom on the way is unset.
+Part follow(const ACSet& x, Part p, const std::vector<HomId>& homs);
 
 } // namespace catplan::migrate

@@ -16,27 +16,6 @@ using acset::Value;
 using hom::ACSetMorphism;
 using migrate::Query;
 
-// The first object variable of a query, if any (the one a tuple is named after).
-std::optional<std::size_t> first_object_node(const Query& q) {
-    for (std::size_t i = 0; i < q.nodes().size(); ++i) {
-        if (!q.nodes()[i].is_value) {
-            return i;
-        }
-    }
-    return std::nullopt;
-}
-
-// The part reached from p along a path of x's homs, or kNoPart once a hom on the way is unset.
-Part follow(const ACSet& x, Part p, const std::vector<HomId>& homs) {
-    for (HomId h : homs) {
-        if (p == kNoPart) {
-            return kNoPart;
-        }
-        p = x.subpart(h, p);
-    }
-    return p;
-}
-
 std::string value_text(const Value& v) {
     if (v.is_concrete()) {
         return v.to_string();
@@ -160,7 +139,7 @@ DivergenceCheck::DivergenceCheck(const migrate::SchemaMap& f, const Renaming& re
     const auto& t = *f.target();
     for (std::uint32_t c = 0; c < t.num_obs(); ++c) {
         const Query& q = f.query(ObId(c));
-        if (q.is_empty() || !first_object_node(q)) {
+        if (q.is_empty() || !q.first_object_node()) {
             continue; // no tuples, or the one tuple of @unit, which no step changes
         }
         const ACSet& shape = q.state();
@@ -193,7 +172,7 @@ std::string DivergenceCheck::source_name(const ACSet& x, ObId ob, Part p) const 
 
 void DivergenceCheck::pinned_keys(const ACSet& x, ObId c, ObId ob, Part shape, Part p) {
     const Query& q = f_.query(c);
-    auto el = q.locate_node(*first_object_node(q));
+    auto el = q.locate_node(*q.first_object_node());
     for_each_tuple(q, x, ob, shape, p, [&](const Tuple& t) {
         keys_.emplace(c.index(), source_name(x, el.ob, t.at(el.ob, el.part)));
     });
@@ -249,7 +228,7 @@ std::optional<bool> DivergenceCheck::agree(const Key& key, const NamedState& xn,
         return std::nullopt;
     }
     const Query& q = f_.query(c);
-    auto el = q.locate_node(*first_object_node(q));
+    auto el = q.locate_node(*q.first_object_node());
     auto inv = inverse_.find(name);
     const std::string& xname = inv == inverse_.end() ? name : inv->second;
     if (xn.ambiguous(el.ob, xname)) {
@@ -265,10 +244,10 @@ std::optional<bool> DivergenceCheck::agree(const Key& key, const NamedState& xn,
                 const auto& im = f_.hom_image(fh);
                 r += '|';
                 if (im.path) {
-                    Part end = follow(x, tu.at(el.ob, el.part), *im.path);
+                    Part end = migrate::follow(x, tu.at(el.ob, el.part), *im.path);
                     ObId end_ob = im.path->empty() ? el.ob : x.schema().hom(im.path->back()).codom;
                     r += source_name(x, end_ob, end);
-                } else if (auto dn = first_object_node(f_.query(t.hom(fh).codom))) {
+                } else if (auto dn = f_.query(t.hom(fh).codom).first_object_node()) {
                     auto eld = f_.query(t.hom(fh).codom).locate_node(*dn);
                     r += source_name(x, eld.ob, tu.at(eld.ob, (*im.morphism)(eld.ob, eld.part)));
                 }
@@ -286,7 +265,7 @@ std::optional<bool> DivergenceCheck::agree(const Key& key, const NamedState& xn,
                     v = im.value.is_var() ? tu.var(im.type, im.value.var_index()) : im.value;
                     break;
                 case migrate::AttrImage::Kind::Path: {
-                    Part e = follow(x, tu.at(im.start_ob, im.start), im.homs);
+                    Part e = migrate::follow(x, tu.at(im.start_ob, im.start), im.homs);
                     v = e == kNoPart ? Value() : x.subpart(im.attr, e);
                     break;
                 }
