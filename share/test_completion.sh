@@ -32,7 +32,7 @@ checks() {
     expect_exactly "export import" catplan json ""
     expect_exactly "--pretty" catplan json export --pr
     expect_exactly "--rename-by-type --replan" catplan transfer x.cp --re
-    expect_exactly "bfs astar gbfs" catplan plan x.cp --search ""
+    expect_exactly "lama lazy gbfs astar bfs" catplan plan x.cp --search ""
     expect_exactly "gbfs" catplan transfer x.cp --replan --heuristic hff --search g
     expect_exactly "" catplan plan x.cp --max-time ""
     expect_exactly "" catplan transfer x.cp --map ""

@@ -2,7 +2,6 @@
 # Line coverage of the library by the tests: builds the `coverage` preset (gcc --coverage), runs
 # every test, and prints gcovr's summary for src/catplan with the unit tests themselves left out.
 # The report is in build/coverage/coverage.txt and, per file and line, build/coverage/html/.
-# docs/coverage.md holds the last figure.
 set -eu
 cd "$(dirname "$0")/.."
 JOBS=${JOBS:-2}

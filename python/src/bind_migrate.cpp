@@ -108,7 +108,8 @@ object to a query (the blocks of one colour).)doc")
         .def("migrate", &migrate_state, py::arg("state"), "Δ_F(state); see catplan.migrate.")
         .def("sigma", &sigma, py::arg("state"), py::arg("max_parts") = 1000000,
              "Σ_F(state); see catplan.sigma.")
-        .def("__str__", [](const PyMap& f) { return migrate::map_text(migrate::describe_map(*f.ptr)); })
+        .def("__str__",
+             [](const PyMap& f) { return migrate::map_text(migrate::describe_map(*f.ptr)); })
         .def("__repr__", [](const PyMap& f) {
             return "<Map " + f.name + " : " + f.ptr->target()->name() + " -> " +
                    f.ptr->source()->name() + " (" + (f.ptr->is_delta() ? "delta" : "conjunctive") +

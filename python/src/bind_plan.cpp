@@ -215,7 +215,9 @@ says why), not an exception; a plan with a syntax error raises CatplanError.)doc
                       "'solved', 'unsolvable', 'node limit', 'time limit' or 'memory limit'.")
         .def_readonly("plan", &PySearchResult::plan, "The plan found, or None.")
         .def_readonly("stats", &PySearchResult::stats,
-                      "expanded, generated, duplicates, states, frontier, bytes, f, seconds.")
+                      "expanded, evaluated, generated, duplicates, states, frontier, f, seconds, "
+                      "setup_seconds, ground_seconds, search_seconds, variables, actions, plans, "
+                      "memory, peak_memory (resident bytes of the process).")
         .def_property_readonly("solved",
                                [](const PySearchResult& r) { return r.status == "solved"; })
         .def("__repr__", [](const PySearchResult& r) {
@@ -264,13 +266,21 @@ plan::Plan plan_arg(const py::handle& plan) {
 py::dict stats_dict(const plan::SearchStats& s) {
     py::dict d;
     d["expanded"] = s.expanded;
+    d["evaluated"] = s.evaluated;
     d["generated"] = s.generated;
     d["duplicates"] = s.duplicates;
     d["states"] = s.states;
     d["frontier"] = s.frontier;
-    d["bytes"] = s.bytes;
     d["f"] = s.f;
     d["seconds"] = s.seconds;
+    d["setup_seconds"] = s.setup_seconds;
+    d["ground_seconds"] = s.ground_seconds;
+    d["search_seconds"] = s.search_seconds();
+    d["variables"] = s.variables;
+    d["actions"] = s.actions;
+    d["plans"] = s.plans;
+    d["memory"] = s.memory;
+    d["peak_memory"] = s.peak_memory;
     return d;
 }
 

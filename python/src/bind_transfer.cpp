@@ -168,6 +168,8 @@ std::string_view fault_kind(transfer::Fault::Kind k) {
         return "goal";
     case K::IntendedGoal:
         return "intended_goal";
+    case K::Divergence:
+        return "divergence";
     }
     return "step";
 }
@@ -193,8 +195,9 @@ void bind_verdict(py::module_& m) {
     py::class_<transfer::Fault>(m, "Fault", R"doc(
 One thing that makes a transfer invalid. kind is 'source_plan' (the source plan is invalid on
 its problem), 'step' (a source step applies but its migration does not), 'goal' (Δ_F(G) does
-not embed monically in the last target state) or 'intended_goal' (the goal intended in the
-target domain is not fully satisfied).)doc")
+not embed monically in the last target state), 'intended_goal' (the goal intended in the
+target domain is not fully satisfied) or 'divergence' (with strict: after a step the target
+state is not Δ_F of the source state).)doc")
         .def_property_readonly(
             "kind", [](const transfer::Fault& f) { return std::string(fault_kind(f.kind)); })
         .def_readonly("step", &transfer::Fault::step, "The step (0-based) it is about, or None.")

@@ -1,1 +1,1 @@
-plan examples/colorblocksworld/colorblocksworld.cp --domain Blocksworld --problem CaseStudy --no-timing
+plan examples/colorblocksworld/colorblocksworld.cp --domain Blocksworld --problem CaseStudy --search bfs --no-timing

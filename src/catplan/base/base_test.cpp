@@ -1,16 +1,37 @@
 #include "catplan/base/diagnostic.hpp"
+#include "catplan/base/process.hpp"
 #include "catplan/base/result.hpp"
 #include "catplan/base/symbol.hpp"
 #include "catplan/base/union_find.hpp"
 
 #include <gtest/gtest.h>
 
+#include <cstring>
+#include <memory>
 #include <string>
 #include <thread>
 #include <vector>
 
 namespace catplan {
 namespace {
+
+TEST(Process, ResidentMemoryFollowsTouchedPages) {
+    std::size_t before = resident_bytes();
+    ASSERT_GT(before, 0u);
+    constexpr std::size_t kBytes = 64u << 20;
+    auto block = std::make_unique<char[]>(kBytes);
+    std::memset(block.get(), 1, kBytes);
+    std::size_t after = resident_bytes();
+    EXPECT_GE(after, before + kBytes / 4 * 3) << "64 MiB touched";
+    EXPECT_GE(static_cast<std::size_t>(peak_rss_kib()) * 1024, after / 2);
+    EXPECT_EQ(block[kBytes - 1], 1);
+}
+
+TEST(Process, DefaultMemoryLimitIsThreeQuartersOfPhysicalMemory) {
+    std::size_t phys = physical_memory_bytes();
+    ASSERT_GT(phys, std::size_t{1} << 26);
+    EXPECT_EQ(default_memory_limit_bytes(), phys / 4 * 3);
+}
 
 TEST(Symbol, TextsStayReadableAcrossManyChunksAndThreads) {
     // Two threads intern 20,000 texts each (several chunks of the table) while reading back

@@ -17,10 +17,15 @@
 #include "catplan/schema/printer.hpp"
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fmt/format.h>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <ostream>
 
 namespace catplan::cli {
@@ -29,8 +34,18 @@ namespace catplan::cli {
 bool is_pddl_input(const std::vector<std::string>& files);
 int pddl_validate(const std::vector<std::string>& files, std::ostream& out, std::ostream& err);
 int pddl_plan(const std::vector<std::string>& files, const plan::SearchOptions& options,
-              const std::string& config, const std::string& output, bool timing, std::ostream& out,
-              std::ostream& err);
+              const std::string& search, const std::string& output, bool timing, bool json,
+              std::ostream& out, std::ostream& err);
+
+/// The lines after a plan (or in place of one): the verdict, the search that ran and why, the
+/// statistics; each line starts with `comment`.
+std::string plan_summary(const plan::SearchResult& r, const std::string& search, std::size_t steps,
+                         bool timing, std::string_view comment);
+/// A planner run as JSON: status, plan (the given steps), the search, the statistics.
+nlohmann::json plan_json(const plan::SearchResult& r, const std::string& search,
+                         nlohmann::json steps, bool timing);
+/// 0 solved, 1 unsolvable, 4 a limit (docs/exit-codes.md).
+int plan_exit_code(plan::SearchStatus status);
 
 namespace {
 
@@ -326,52 +341,140 @@ int cmd_validate(const ValidateArgs& a, std::ostream& out, std::ostream& err) {
 
 struct PlanArgs {
     std::vector<std::string> files; // FILE, or DOMAIN.pddl PROBLEM.pddl
-    std::string domain, problem, output;
-    std::string search = "bfs", heuristic = "hff";
+    std::string domain, problem, output, format = "text";
+    std::string search = "lama", heuristic = "default";
     std::uint64_t max_nodes = 0;
-    double max_time = 0, max_memory_mb = 0;
-    bool no_timing = false;
+    double max_time = 0;
+    double max_memory_mb = 0; // the planner's default (75% of the machine's memory)
+    bool no_timing = false, anytime = false, no_ground = false;
 };
 
-std::string format_stats(const plan::SearchStats& st, bool timing) {
-    std::string text = fmt::format("expanded {}, generated {}, duplicates {}, states {}",
-                                   st.expanded, st.generated, st.duplicates, st.states);
-    if (timing) {
-        text +=
-            fmt::format(", {:.1f} MB, {:.3f} s", static_cast<double>(st.bytes) / 1e6, st.seconds);
-    }
-    return text;
-}
-
-int cmd_plan(const PlanArgs& a, std::ostream& out, std::ostream& err) {
+/// The search options of `a`; progress reports go to `err` and into `last`, which is what an
+/// out-of-memory error can tell of the search.
+plan::SearchOptions plan_options(const PlanArgs& a, std::ostream& err,
+                                 const std::shared_ptr<plan::SearchStats>& last) {
     plan::SearchOptions options;
+    options.start = plan::Clock::now(); // reading the input counts against --max-time too
     options.search = *plan::parse_search(a.search);
     options.heuristic = *plan::parse_heuristic(a.heuristic);
+    options.ground = !a.no_ground;
+    options.anytime = a.anytime;
     options.max_nodes = a.max_nodes;
     options.max_seconds = a.max_time;
     options.max_bytes = static_cast<std::size_t>(a.max_memory_mb * 1e6);
-    // The last progress report is what an out-of-memory error can tell of the search.
-    auto last = std::make_shared<plan::SearchStats>();
     options.progress = [&err, last, timing = !a.no_timing](const plan::SearchStats& st) {
         *last = st;
         if (timing) {
-            err << fmt::format("catplan: searching: expanded {}, generated {}, frontier {}, f {}, "
-                               "{:.1f} MB, {:.1f} s\n",
-                               st.expanded, st.generated, st.frontier, st.f,
-                               static_cast<double>(st.bytes) / 1e6, st.seconds);
+            double search = st.search_seconds();
+            err << fmt::format("catplan: searching: expanded {} ({:.0f}/s), evaluated {}, "
+                               "generated {}, frontier {}, h {}, {:.1f} MB, {:.1f} s\n",
+                               st.expanded, search > 0 ? st.expanded / search : 0.0, st.evaluated,
+                               st.generated, st.frontier, st.f,
+                               static_cast<double>(st.memory) / 1e6, st.seconds);
         }
     };
+    return options;
+}
+
+} // namespace
+
+std::string plan_summary(const plan::SearchResult& r, const std::string& search, std::size_t steps,
+                         bool timing, std::string_view comment) {
+    std::string label = fmt::format("{}: {}{}", search, r.config, r.optimal ? "; optimal" : "");
+    std::string text;
+    switch (r.status) {
+    case plan::SearchStatus::Solved:
+        text =
+            fmt::format("{}plan of {} step{} ({})\n", comment, steps, steps == 1 ? "" : "s", label);
+        break;
+    case plan::SearchStatus::Unsolvable:
+        text = fmt::format("{}no plan: the goal is unreachable (every reachable state was "
+                           "expanded; {})\n",
+                           comment, label);
+        break;
+    default:
+        text = fmt::format("{}no plan found: {} reached ({})\n", comment, plan::to_string(r.status),
+                           label);
+    }
+    if (r.path == "grounded") {
+        text += fmt::format("{}grounded search: {} variables, {} actions", comment,
+                            r.stats.variables, r.stats.actions);
+        text += timing ? fmt::format(", compiled in {:.3f} s\n", r.stats.ground_seconds) : "\n";
+    } else {
+        text += fmt::format("{}C-set search: {}\n", comment, r.path_reason);
+    }
+    if (r.exits > 0) {
+        text += fmt::format("{}{} transition{} left the ground task and {} not followed, e.g. "
+                            "{}\n",
+                            comment, r.exits, r.exits == 1 ? "" : "s",
+                            r.exits == 1 ? "was" : "were", r.exit_example);
+    }
+    if (r.stats.plans > 1) {
+        text +=
+            fmt::format("{}anytime: {} plans found, the shortest kept\n", comment, r.stats.plans);
+    }
+    return text + plan::describe(r.stats, timing, comment);
+}
+
+nlohmann::json plan_json(const plan::SearchResult& r, const std::string& search,
+                         nlohmann::json steps, bool timing) {
+    nlohmann::json j;
+    j["status"] = std::string(plan::to_string(r.status));
+    if (r.status == plan::SearchStatus::Solved) {
+        j["plan"] = std::move(steps);
+        j["optimal"] = r.optimal;
+    }
+    j["search"] = {{"name", search},   {"config", r.config},
+                   {"path", r.path},   {"reason", r.path_reason},
+                   {"exits", r.exits}, {"exit_example", r.exit_example}};
+    const auto& st = r.stats;
+    nlohmann::json stats = {{"expanded", st.expanded},   {"evaluated", st.evaluated},
+                            {"generated", st.generated}, {"duplicates", st.duplicates},
+                            {"states", st.states},       {"variables", st.variables},
+                            {"actions", st.actions},     {"plans", st.plans}};
+    if (timing) {
+        double search_s = st.search_seconds();
+        stats["seconds"] = st.seconds;
+        stats["setup_seconds"] = st.setup_seconds;
+        stats["ground_seconds"] = st.ground_seconds;
+        stats["search_seconds"] = search_s;
+        stats["expanded_per_second"] = search_s > 0 ? st.expanded / search_s : 0.0;
+        stats["evaluated_per_second"] = search_s > 0 ? st.evaluated / search_s : 0.0;
+        stats["memory_bytes"] = st.memory;
+        stats["peak_memory_bytes"] = st.peak_memory;
+    }
+    j["statistics"] = std::move(stats);
+    return j;
+}
+
+int plan_exit_code(plan::SearchStatus status) {
+    switch (status) {
+    case plan::SearchStatus::Solved:
+        return kOk;
+    case plan::SearchStatus::Unsolvable:
+        return kNo;
+    default:
+        return kLimit;
+    }
+}
+
+namespace {
+
+int cmd_plan(const PlanArgs& a, std::ostream& out, std::ostream& err) {
+    auto last = std::make_shared<plan::SearchStats>();
+    auto options = plan_options(a, err, last);
     OutOfMemoryNote note([last] {
-        return last->seconds > 0
-                   ? fmt::format("the search had, at its last progress report, {}",
-                                 format_stats(*last, true))
-                   : std::string("the search ran out of memory before its first progress report");
+        if (last->seconds == 0) {
+            return std::string("the search ran out of memory before its first progress report");
+        }
+        std::string stats = plan::describe(*last, true, "");
+        stats.pop_back(); // one line: the statistics' lines joined
+        std::replace(stats.begin(), stats.end(), '\n', ';');
+        return "the search had, at its last progress report, " + stats;
     });
-    std::string config = options.search == plan::SearchKind::BreadthFirst
-                             ? a.search
-                             : fmt::format("{}, {}", a.search, a.heuristic);
+    bool json = a.format == "json";
     if (is_pddl_input(a.files)) {
-        return pddl_plan(a.files, options, config, a.output, !a.no_timing, out, err);
+        return pddl_plan(a.files, options, a.search, a.output, !a.no_timing, json, out, err);
     }
     if (a.files.size() != 1 || a.problem.empty()) {
         error(err, "plan takes FILE --problem P, or DOMAIN.pddl PROBLEM.pddl");
@@ -383,31 +486,24 @@ int cmd_plan(const PlanArgs& a, std::ostream& out, std::ostream& err) {
         return kBadInput;
     }
     auto r = plan::find_plan(*problem, options);
-    std::string stats = fmt::format("# {}\n", format_stats(r.stats, !a.no_timing));
-    if (r.status == plan::SearchStatus::Solved) {
-        std::string text = r.plan->to_string();
-        std::string summary = fmt::format("# plan of {} step{} ({})\n", r.plan->steps.size(),
-                                          r.plan->steps.size() == 1 ? "" : "s", config) +
-                              stats;
-        if (a.output.empty() || a.output == "-") {
-            out << text << summary;
-            return kOk;
+    int rc = plan_exit_code(r.status);
+    std::string text = r.plan ? r.plan->to_string() : "";
+    if (r.plan && !a.output.empty() && a.output != "-") {
+        if (int wrc = emit(text, a.output, out, err); wrc != kOk) {
+            return wrc;
         }
-        int rc = emit(text, a.output, out, err);
-        out << summary;
+        text.clear();
+    }
+    if (json) {
+        nlohmann::json steps = nlohmann::json::array();
+        for (const auto& st : r.plan ? r.plan->steps : std::vector<plan::Step>{}) {
+            steps.push_back({{"action", st.action}, {"args", st.args}});
+        }
+        out << plan_json(r, a.search, std::move(steps), !a.no_timing).dump(2) << "\n";
         return rc;
     }
-    if (r.status == plan::SearchStatus::Unsolvable) {
-        out << fmt::format(
-                   "# no plan: the goal is unreachable (every reachable state was expanded; "
-                   "{})\n",
-                   config)
-            << stats;
-        return kNo;
-    }
-    out << fmt::format("# no plan found: {} reached ({})\n", plan::to_string(r.status), config)
-        << stats;
-    return kLimit;
+    out << text << plan_summary(r, a.search, r.plan ? r.plan->steps.size() : 0, !a.no_timing, "# ");
+    return rc;
 }
 
 } // namespace
@@ -505,23 +601,39 @@ int run(int argc, char** argv, std::ostream& out, std::ostream& err) {
                          "the domain (default: the problem's domain)");
     plan_cmd->add_option("--problem", plan_args.problem,
                          "the problem declared in FILE (required for a .cp file)");
-    plan_cmd->add_option("--search", plan_args.search, "bfs (shortest plans), astar or gbfs")
-        ->check(CLI::IsMember({"bfs", "astar", "gbfs"}))
+    plan_cmd
+        ->add_option("--search", plan_args.search,
+                     "lama (lazy greedy, hff and lmcount, preferred operators), lazy (lazy "
+                     "greedy with --heuristic), gbfs (eager greedy), astar (optimal with an "
+                     "admissible heuristic) or bfs (shortest plans, small problems)")
+        ->check(CLI::IsMember({"lama", "lazy", "gbfs", "astar", "bfs"}))
         ->capture_default_str();
     plan_cmd
         ->add_option("--heuristic", plan_args.heuristic,
-                     "for astar and gbfs: blind, goalcount, hadd or hff")
-        ->check(CLI::IsMember({"blind", "goalcount", "hadd", "hff"}))
+                     "hff, hadd, hmax, lmcut (admissible), lmcount, goalcount or blind; default: "
+                     "hff for gbfs and lazy, lmcut for astar")
+        ->check(CLI::IsMember(
+            {"default", "blind", "goalcount", "hadd", "hmax", "hff", "lmcut", "lmcount"}))
         ->capture_default_str();
+    plan_cmd->add_flag("--anytime", plan_args.anytime,
+                       "after the first plan, search for shorter ones until --max-time");
+    plan_cmd->add_flag("--no-ground", plan_args.no_ground,
+                       "search C-sets even where the problem compiles into a ground task");
     plan_cmd->add_option("--max-nodes", plan_args.max_nodes, "stop after expanding N states")
         ->check(positive_count());
-    plan_cmd->add_option("--max-time", plan_args.max_time, "stop after S seconds")
+    plan_cmd
+        ->add_option("--max-time", plan_args.max_time,
+                     "stop after S seconds of wall time, every phase included (default: none)")
         ->check(positive_number("seconds"));
     plan_cmd
         ->add_option("--max-memory", plan_args.max_memory_mb,
-                     "stop when the stored states take about MB megabytes")
+                     "stop when the process's resident memory reaches MB megabytes (default: 75% "
+                     "of this machine's memory)")
         ->check(positive_number("megabytes"));
     plan_cmd->add_option("-o,--output", plan_args.output, "write the plan to this file");
+    plan_cmd->add_option("--format", plan_args.format, "text or json (plan and statistics)")
+        ->check(CLI::IsMember({"text", "json"}))
+        ->capture_default_str();
     plan_cmd->add_flag(
         "--no-timing", plan_args.no_timing,
         "no progress reports, no time or memory in the statistics (reproducible output)");

@@ -215,16 +215,22 @@ void add_replan_options(CLI::App* cmd, TransferArgs& a, const std::string& repla
     cmd->add_option("--heuristic", a.heuristic, "with --replan: blind, goalcount, hadd or hff")
         ->check(CLI::IsMember({"blind", "goalcount", "hadd", "hff"}))
         ->capture_default_str();
-    cmd->add_option("--max-time", a.max_time, "with --replan: stop the search after S seconds")
-        ->check(positive_number("seconds"))
-        ->capture_default_str();
+    cmd->add_option("--max-time", a.max_time,
+                    "with --replan: stop the search after S seconds (default: 60, or none with "
+                    "--max-nodes)")
+        ->check(positive_number("seconds"));
+    cmd->add_option("--max-nodes", a.max_nodes,
+                    "with --replan: stop the search after expanding N states (the same result on "
+                    "every machine, unlike a time limit)")
+        ->check(positive_count());
 }
 
 plan::SearchOptions replan_options(const TransferArgs& a) {
     plan::SearchOptions so;
     so.search = *plan::parse_search(a.search);
     so.heuristic = *plan::parse_heuristic(a.heuristic);
-    so.max_seconds = a.max_time;
+    so.max_nodes = a.max_nodes;
+    so.max_seconds = a.max_time > 0 ? a.max_time : a.max_nodes > 0 ? 0 : 60;
     return so;
 }
 

@@ -107,13 +107,17 @@ struct TransferArgs {
     /// Replanning in the target domain (--replan and its search settings).
     bool replan = false;
     std::string search = "bfs", heuristic = "hff";
-    double max_time = 60;
+    /// 0: not given; the search then stops after 60 s unless max_nodes is given (a node limit
+    /// alone keeps the result the same on every machine).
+    double max_time = 0;
+    std::uint64_t max_nodes = 0;
 };
 
 /// Adds FILE, --map, --domain, --problem, --plan, --goal and --rename-by-type to cmd.
 void add_transfer_input_options(CLI::App* cmd, TransferArgs& a);
 
-/// Adds --replan (described by replan_help), --search, --heuristic and --max-time to cmd.
+/// Adds --replan (described by replan_help), --search, --heuristic, --max-time and --max-nodes
+/// to cmd.
 void add_replan_options(CLI::App* cmd, TransferArgs& a, const std::string& replan_help);
 
 /// The search the replan options ask for.

@@ -11,6 +11,7 @@
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
+#include <nlohmann/json.hpp>
 #include <ostream>
 
 namespace catplan::cli {
@@ -21,8 +22,14 @@ bool is_pddl_input(const std::vector<std::string>& files);
 int pddl_validate(const std::vector<std::string>& files, std::ostream& out, std::ostream& err);
 /// `catplan plan DOMAIN.pddl PROBLEM.pddl`: the plan in IPC form.
 int pddl_plan(const std::vector<std::string>& files, const plan::SearchOptions& options,
-              const std::string& config, const std::string& output, bool timing, std::ostream& out,
-              std::ostream& err);
+              const std::string& search, const std::string& output, bool timing, bool json,
+              std::ostream& out, std::ostream& err);
+// commands.cpp: what `plan` prints after a plan, its JSON, its exit code.
+std::string plan_summary(const plan::SearchResult& r, const std::string& search, std::size_t steps,
+                         bool timing, std::string_view comment);
+nlohmann::json plan_json(const plan::SearchResult& r, const std::string& search,
+                         nlohmann::json steps, bool timing);
+int plan_exit_code(plan::SearchStatus status);
 
 namespace {
 
@@ -241,8 +248,8 @@ int pddl_validate(const std::vector<std::string>& files, std::ostream& out, std:
 }
 
 int pddl_plan(const std::vector<std::string>& files, const plan::SearchOptions& options,
-              const std::string& config, const std::string& output, bool timing, std::ostream& out,
-              std::ostream& err) {
+              const std::string& search, const std::string& output, bool timing, bool json,
+              std::ostream& out, std::ostream& err) {
     if (files.size() != 2) {
         error(err, "plan on PDDL takes DOMAIN.pddl PROBLEM.pddl");
         return kBadInput;
@@ -253,32 +260,30 @@ int pddl_plan(const std::vector<std::string>& files, const plan::SearchOptions& 
         return kBadInput;
     }
     auto r = plan::find_plan(*im->problem, options);
-    const auto& st = r.stats;
-    std::string stats = fmt::format("; expanded {}, generated {}, duplicates {}, states {}",
-                                    st.expanded, st.generated, st.duplicates, st.states);
-    if (timing) {
-        stats +=
-            fmt::format(", {:.1f} MB, {:.3f} s", static_cast<double>(st.bytes) / 1e6, st.seconds);
+    int rc = plan_exit_code(r.status);
+    std::optional<pddl::IpcPlan> ipc;
+    std::string text;
+    if (r.plan) {
+        auto converted = pddl::to_ipc_plan(*im, *r.plan);
+        CATPLAN_ASSERT(converted.has_value(), "the planner uses the imported rules");
+        ipc = std::move(*converted);
+        text = pddl::write_ipc_plan(*ipc);
+        if (!output.empty() && output != "-") {
+            if (int wrc = emit(text, output, out, err); wrc != kOk) {
+                return wrc;
+            }
+            text.clear();
+        }
     }
-    if (r.status != plan::SearchStatus::Solved) {
-        out << fmt::format("; no plan: {} ({})\n{}\n",
-                           r.status == plan::SearchStatus::Unsolvable
-                               ? "the goal is unreachable"
-                               : std::string(plan::to_string(r.status)) + " reached",
-                           config, stats);
-        return r.status == plan::SearchStatus::Unsolvable ? kNo : kLimit;
+    if (json) {
+        nlohmann::json steps = nlohmann::json::array();
+        for (const auto& st : ipc ? *ipc : pddl::IpcPlan{}) {
+            steps.push_back({{"action", st.action}, {"args", st.args}});
+        }
+        out << plan_json(r, search, std::move(steps), timing).dump(2) << "\n";
+        return rc;
     }
-    auto ipc = pddl::to_ipc_plan(*im, *r.plan);
-    CATPLAN_ASSERT(ipc.has_value(), "the planner uses the imported rules");
-    std::string text = pddl::write_ipc_plan(*ipc);
-    std::string summary = fmt::format("; plan of {} step{} ({})\n{}\n", ipc->size(),
-                                      ipc->size() == 1 ? "" : "s", config, stats);
-    if (output.empty() || output == "-") {
-        out << text << summary;
-        return kOk;
-    }
-    int rc = emit(text, output, out, err);
-    out << summary;
+    out << text << plan_summary(r, search, ipc ? ipc->size() : 0, timing, "; ");
     return rc;
 }
 

@@ -1,6 +1,11 @@
+// Pushouts and coproducts (colimit.hpp), presented by generators and equations: a generator for
+// each part and variable of B and C, their homs and cells, and an equation for each part and
+// variable of A (colimit::Presentation closes them under congruence).
+
 #include "catplan/colimit/colimit.hpp"
 
-#include "catplan/base/union_find.hpp"
+#include "catplan/base/assert.hpp"
+#include "catplan/colimit/presentation.hpp"
 
 #include <fmt/format.h>
 #include <optional>
@@ -11,135 +16,97 @@ using acset::Value;
 
 namespace {
 
-// Gluing of two states B and C: per object a union-find over B's parts then C's parts, per
-// attribute type a union-find over B's variables then C's, with an optional constant per class.
-class Gluing {
-public:
-    Gluing(const ACSet& b, const ACSet& c) : b_(b), c_(c) {
-        const auto& s = b.schema();
-        for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
-            parts_.emplace_back(b.num_parts(ObId(o)) + c.num_parts(ObId(o)));
-        }
-        for (std::uint32_t t = 0; t < s.num_attr_types(); ++t) {
-            auto n = b.num_vars(AttrTypeId(t)) + c.num_vars(AttrTypeId(t));
-            vars_.emplace_back(n);
-            bound_.emplace_back(n);
-        }
-    }
-
-    static std::uint32_t part_b(ObId /*o*/, Part p) { return p; }
-
-    std::uint32_t part_c(ObId o, Part p) const {
-        return static_cast<std::uint32_t>(b_.num_parts(o)) + p;
-    }
-
-    void glue_parts(ObId o, std::uint32_t x, std::uint32_t y) {
-        parts_[o.index()].union_sets(x, y);
-    }
-
-    // A value as seen in the glued world: a constant, or a variable class id (B's vars first).
-    struct Term {
-        bool is_var = false;
-        std::uint32_t var = 0;
-        Value value;
-    };
-
-    static std::optional<Term> term_b(const Value& v) { return term(v, 0); }
-
-    std::optional<Term> term_c(AttrTypeId t, const Value& v) const {
-        return term(v, static_cast<std::uint32_t>(b_.num_vars(t)));
-    }
-
-    // Unifies two terms of attribute type t; false when two different constants meet.
-    bool unify(AttrTypeId t, const Term& x, const Term& y) {
-        auto& uf = vars_[t.index()];
-        auto& bound = bound_[t.index()];
-        if (!x.is_var && !y.is_var) {
-            return x.value == y.value;
-        }
-        if (x.is_var && y.is_var) {
-            auto rx = uf.find(x.var), ry = uf.find(y.var);
-            if (rx == ry) {
-                return true;
-            }
-            auto bx = bound[rx], by = bound[ry];
-            if (bx && by && !(*bx == *by)) {
-                return false;
-            }
-            uf.union_sets(rx, ry);
-            bound[uf.find(rx)] = bx ? bx : by;
-            return true;
-        }
-        const Term& v = x.is_var ? x : y;
-        const Term& c = x.is_var ? y : x;
-        auto r = uf.find(v.var);
-        if (bound[r] && !(*bound[r] == c.value)) {
-            return false;
-        }
-        bound[r] = c.value;
-        return true;
-    }
-
-    UnionFind& parts(ObId o) { return parts_[o.index()]; }
-
-    UnionFind& vars(AttrTypeId t) { return vars_[t.index()]; }
-
-    const std::optional<Value>& binding(AttrTypeId t, std::uint32_t root) const {
-        return bound_[t.index()][root];
-    }
-
-private:
-    static std::optional<Term> term(const Value& v, std::uint32_t offset) {
-        if (v.is_unset()) {
-            return std::nullopt;
-        }
-        if (v.is_var()) {
-            return Term{true, offset + v.var_index(), Value()};
-        }
-        return Term{false, 0, v};
-    }
-
-    const ACSet& b_;
-    const ACSet& c_;
-    std::vector<UnionFind> parts_;
-    std::vector<UnionFind> vars_;
-    std::vector<std::vector<std::optional<Value>>> bound_;
+// The generators of the two feet: per foot (B, C), per object the node of each part, per
+// attribute type the node of each variable.
+struct Feet {
+    std::vector<std::vector<Node>> parts[2];
+    std::vector<std::vector<Node>> vars[2];
 };
 
-// Glues the images of glued parts until nothing changes (a congruence), so homs are well defined.
-void close_under_homs(const ACSet& b, const ACSet& c, Gluing& g) {
-    const auto& s = b.schema();
-    bool changed = true;
-    while (changed) {
-        changed = false;
+Feet generators(Presentation& p, const ACSet* feet[2]) {
+    const auto& s = p.schema();
+    Feet out;
+    for (int i = 0; i < 2; ++i) {
+        out.parts[i].resize(s.num_obs());
+        out.vars[i].resize(s.num_attr_types());
+    }
+    // B's parts, then C's; B's variables, then C's: the numbering of the result.
+    for (int i = 0; i < 2; ++i) {
+        for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
+            for (Part q = 0; q < feet[i]->num_parts(ObId(o)); ++q) {
+                out.parts[i][o].push_back(p.add_part(ObId(o), feet[i]->part_name(ObId(o), q)));
+            }
+        }
+    }
+    for (int i = 0; i < 2; ++i) {
+        for (std::uint32_t t = 0; t < s.num_attr_types(); ++t) {
+            for (std::uint32_t j = 0; j < feet[i]->num_vars(AttrTypeId(t)); ++j) {
+                out.vars[i][t].push_back(
+                    p.add_value(AttrTypeId(t), feet[i]->var_name(AttrTypeId(t), j)));
+            }
+        }
+    }
+    return out;
+}
+
+// The node of a foot's value (a variable's node, or a new node holding the constant).
+Node value_node(Presentation& p, const Feet& feet, int foot, AttrTypeId t, const Value& v) {
+    if (v.is_var()) {
+        return feet.vars[foot][t.index()][v.var_index()];
+    }
+    Node n = p.add_value(t);
+    p.set_literal(n, v);
+    return n;
+}
+
+// The homs and cells of both feet.
+void relations(Presentation& p, const Feet& feet, const ACSet* xs[2]) {
+    const auto& s = p.schema();
+    for (int i = 0; i < 2; ++i) {
         for (std::uint32_t h = 0; h < s.num_homs(); ++h) {
             HomId f(h);
             ObId dom = s.hom(f).dom, codom = s.hom(f).codom;
-            auto nb = b.num_parts(dom), nc = c.num_parts(dom);
-            // For each class, the first image met; later images are glued to it.
-            std::vector<std::uint32_t> image(nb + nc, UINT32_MAX);
-            for (std::uint32_t i = 0; i < nb + nc; ++i) {
-                Part target = i < nb ? b.subpart(f, i) : c.subpart(f, static_cast<Part>(i - nb));
-                if (target == kNoPart) {
-                    continue;
+            for (Part q = 0; q < xs[i]->num_parts(dom); ++q) {
+                Part t = xs[i]->subpart(f, q);
+                if (t != kNoPart) {
+                    p.set_hom(feet.parts[i][dom.index()][q], f, feet.parts[i][codom.index()][t]);
                 }
-                std::uint32_t t = i < nb ? g.part_b(codom, target) : g.part_c(codom, target);
-                auto root = g.parts(dom).find(i);
-                if (image[root] == UINT32_MAX) {
-                    image[root] = t;
-                } else if (g.parts(codom).union_sets(image[root], t)) {
-                    changed = true;
+            }
+        }
+        for (std::uint32_t at = 0; at < s.num_attrs(); ++at) {
+            AttrId a(at);
+            ObId dom = s.attr(a).dom;
+            for (Part q = 0; q < xs[i]->num_parts(dom); ++q) {
+                const Value& v = xs[i]->subpart(a, q);
+                if (!v.is_unset()) {
+                    p.set_attr(feet.parts[i][dom.index()][q], a,
+                               value_node(p, feet, i, s.attr(a).codom, v));
                 }
             }
         }
     }
 }
 
-std::string describe_value(const Value& v) {
-    return v.to_string();
-}
-
 } // namespace
+
+std::vector<std::vector<Part>> parts_outside_image(const ACSetMorphism& f, const ACSet& codom) {
+    const auto& s = codom.schema();
+    std::vector<std::vector<Part>> out(s.num_obs());
+    for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
+        std::vector<char> hit(codom.num_parts(ObId(o)), 0);
+        if (o < f.components.size()) {
+            for (Part p : f.components[o]) {
+                hit[p] = 1;
+            }
+        }
+        for (Part p = 0; p < hit.size(); ++p) {
+            if (!hit[p]) {
+                out[o].push_back(p);
+            }
+        }
+    }
+    return out;
+}
 
 Coproduct coproduct(const ACSet& b, const ACSet& c) {
     ACSet a(b.schema_ptr());
@@ -152,286 +119,60 @@ Coproduct coproduct(const ACSet& b, const ACSet& c) {
 Result<Pushout> pushout(const ACSet& a, const ACSet& b, const ACSet& c, const ACSetMorphism& f,
                         const ACSetMorphism& g) {
     const auto& s = a.schema();
-    Gluing glue(b, c);
-    for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
-        ObId ob(o);
-        for (Part p = 0; p < a.num_parts(ob); ++p) {
-            glue.glue_parts(ob, glue.part_b(ob, f(ob, p)), glue.part_c(ob, g(ob, p)));
-        }
-    }
-    close_under_homs(b, c, glue);
-    // Variables of A glue their images in B and C.
+    Presentation p(a.schema_ptr());
+    const ACSet* xs[2] = {&b, &c};
+    Feet feet = generators(p, xs);
+    // Variables of A glue their images first, so that a clash is named by the variable.
     for (std::uint32_t t = 0; t < s.num_attr_types(); ++t) {
         AttrTypeId ty(t);
         for (std::uint32_t j = 0; j < a.num_vars(ty); ++j) {
-            auto x = Gluing::term_b(f.var(ty, j));
-            auto y = glue.term_c(ty, g.var(ty, j));
-            if (x && y && !glue.unify(ty, *x, *y)) {
+            const Value &x = f.var(ty, j), &y = g.var(ty, j);
+            if (x.is_unset() || y.is_unset()) {
+                continue;
+            }
+            bool clash = x.is_concrete() && y.is_concrete() && !(x == y);
+            if (!clash && (x.is_var() || y.is_var())) {
+                p.equate_values(value_node(p, feet, 0, ty, x), value_node(p, feet, 1, ty, y));
+                clash = !p.problems().empty();
+            }
+            if (clash) {
                 return fail(fmt::format("no pushout: variable {} of {} is sent to {} and to {}",
                                         a.value_label(ty, Value::var(j)), s.attr_type(ty).name,
-                                        describe_value(f.var(ty, j)),
-                                        describe_value(g.var(ty, j))));
+                                        x.to_string(), y.to_string()));
             }
         }
     }
-    // Attribute cells of glued parts must agree; their variables are unified.
-    for (std::uint32_t at = 0; at < s.num_attrs(); ++at) {
-        AttrId attr(at);
-        ObId ob = s.attr(attr).dom;
-        AttrTypeId ty = s.attr(attr).codom;
-        auto nb = b.num_parts(ob), nc = c.num_parts(ob);
-        std::vector<std::optional<Gluing::Term>> first(nb + nc);
-        for (std::uint32_t i = 0; i < nb + nc; ++i) {
-            auto term = i < nb ? Gluing::term_b(b.subpart(attr, i))
-                               : glue.term_c(ty, c.subpart(attr, static_cast<Part>(i - nb)));
-            if (!term) {
-                continue;
-            }
-            auto root = glue.parts(ob).find(i);
-            if (!first[root]) {
-                first[root] = term;
-            } else if (!glue.unify(ty, *first[root], *term)) {
-                return fail(fmt::format("no pushout: glued parts of {} get two different values "
-                                        "of {}",
-                                        s.ob(ob).name, s.attr(attr).name));
-            }
-        }
-    }
-
-    Pushout result{ACSet(a.schema_ptr()), {}, {}};
-    ACSet& p = result.apex;
-    result.left.components.resize(s.num_obs());
-    result.right.components.resize(s.num_obs());
-    result.left.var_components.resize(s.num_attr_types());
-    result.right.var_components.resize(s.num_attr_types());
-    // Parts: one per class, in order of first member (B's parts first, then C's).
-    std::vector<std::vector<Part>> class_part(s.num_obs());
+    relations(p, feet, xs);
+    // Parts of A glue their images; the closure glues what they reach, and their cells.
     for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
-        ObId ob(o);
-        auto nb = b.num_parts(ob), nc = c.num_parts(ob);
-        class_part[o].assign(nb + nc, kNoPart);
-        for (std::uint32_t i = 0; i < nb + nc; ++i) {
-            auto root = glue.parts(ob).find(i);
-            auto name = i < nb ? b.part_name(ob, i) : c.part_name(ob, static_cast<Part>(i - nb));
-            if (class_part[o][root] == kNoPart) {
-                class_part[o][root] = p.add_part(ob, name);
-            } else if (p.part_name(ob, class_part[o][root]).empty() && !name.empty()) {
-                p.set_part_name(ob, class_part[o][root], name);
-            }
-            Part image = class_part[o][root];
-            if (i < nb) {
-                result.left.components[o].push_back(image);
-            } else {
-                result.right.components[o].push_back(image);
-            }
+        for (Part q = 0; q < a.num_parts(ObId(o)); ++q) {
+            p.equate_parts(feet.parts[0][o][f(ObId(o), q)], feet.parts[1][o][g(ObId(o), q)]);
         }
     }
-    // Variables: one per unbound class, in order of first member; bound classes become constants.
-    std::vector<std::vector<Value>> var_image(s.num_attr_types());
-    for (std::uint32_t t = 0; t < s.num_attr_types(); ++t) {
-        AttrTypeId ty(t);
-        auto nb = b.num_vars(ty), nc = c.num_vars(ty);
-        std::vector<std::optional<Value>> class_value(nb + nc);
-        for (std::uint32_t i = 0; i < nb + nc; ++i) {
-            auto root = glue.vars(ty).find(i);
-            auto name =
-                i < nb ? b.var_name(ty, i) : c.var_name(ty, static_cast<std::uint32_t>(i - nb));
-            if (!class_value[root]) {
-                const auto& bound = glue.binding(ty, root);
-                class_value[root] = bound ? *bound : p.add_var(ty, name);
-            } else if (class_value[root]->is_var() &&
-                       p.var_name(ty, class_value[root]->var_index()).empty() && !name.empty()) {
-                p.set_var_name(ty, class_value[root]->var_index(), name);
-            }
-            var_image[t].push_back(*class_value[root]);
-            (i < nb ? result.left : result.right).var_components[t].push_back(*class_value[root]);
-        }
+    if (!p.problems().empty()) {
+        AttrId attr = p.problems().front().attr;
+        CATPLAN_ASSERT(attr != AttrId(), "a pushout's values meet only in glued cells");
+        return fail(fmt::format("no pushout: glued parts of {} get two different values of {}",
+                                s.ob(s.attr(attr).dom).name, s.attr(attr).name));
     }
-    // Homs and attributes: from any member that has a value (they agree after the closure).
-    for (std::uint32_t h = 0; h < s.num_homs(); ++h) {
-        HomId f2(h);
-        ObId dom = s.hom(f2).dom, codom = s.hom(f2).codom;
-        auto nb = b.num_parts(dom), nc = c.num_parts(dom);
-        for (std::uint32_t i = 0; i < nb + nc; ++i) {
-            Part target = i < nb ? b.subpart(f2, i) : c.subpart(f2, static_cast<Part>(i - nb));
-            if (target == kNoPart) {
-                continue;
+    auto built = p.build();
+    Pushout result{std::move(built.state), {}, {}};
+    ACSetMorphism* legs[2] = {&result.left, &result.right};
+    for (int i = 0; i < 2; ++i) {
+        legs[i]->components.resize(s.num_obs());
+        legs[i]->var_components.resize(s.num_attr_types());
+        for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
+            for (Node n : feet.parts[i][o]) {
+                legs[i]->components[o].push_back(built.part_of[n]);
             }
-            std::uint32_t ti = i < nb ? glue.part_b(codom, target) : glue.part_c(codom, target);
-            Part src = class_part[dom.index()][glue.parts(dom).find(i)];
-            p.set_subpart(f2, src, class_part[codom.index()][glue.parts(codom).find(ti)]);
         }
-    }
-    for (std::uint32_t at = 0; at < s.num_attrs(); ++at) {
-        AttrId attr(at);
-        ObId ob = s.attr(attr).dom;
-        AttrTypeId ty = s.attr(attr).codom;
-        auto nb = b.num_parts(ob), nc = c.num_parts(ob);
-        for (std::uint32_t i = 0; i < nb + nc; ++i) {
-            Value v = i < nb ? b.subpart(attr, i) : c.subpart(attr, static_cast<Part>(i - nb));
-            if (v.is_unset()) {
-                continue;
+        for (std::uint32_t t = 0; t < s.num_attr_types(); ++t) {
+            for (Node n : feet.vars[i][t]) {
+                legs[i]->var_components[t].push_back(built.value_of[n]);
             }
-            if (v.is_var()) {
-                auto offset = i < nb ? 0 : static_cast<std::uint32_t>(b.num_vars(ty));
-                v = var_image[ty.index()][offset + v.var_index()];
-            }
-            p.set_subpart(attr, class_part[ob.index()][glue.parts(ob).find(i)], v);
         }
     }
     return result;
-}
-
-std::vector<GluingViolation> gluing_violations(const ACSet& k, const ACSet& l_state, const ACSet& x,
-                                               const ACSetMorphism& l, const ACSetMorphism& m) {
-    const auto& s = x.schema();
-    std::vector<GluingViolation> out;
-    std::vector<std::vector<bool>> deleted(s.num_obs());
-    for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
-        ObId ob(o);
-        std::vector<bool> kept(l_state.num_parts(ob), false);
-        for (Part p = 0; p < k.num_parts(ob); ++p) {
-            if (kept[l(ob, p)]) {
-                out.push_back({GluingViolationKind::NotMonic, ob, l(ob, p), kNoPart, HomId(),
-                               kNoPart,
-                               fmt::format("the rule's left leg is not monic: two parts of {} "
-                                           "are kept as {}",
-                                           s.ob(ob).name, l_state.part_label(ob, l(ob, p)))});
-            }
-            kept[l(ob, p)] = true;
-        }
-        // Identification: a deleted part of L shares its image with another part of L.
-        std::vector<Part> first_preimage(x.num_parts(ob), kNoPart);
-        deleted[o].assign(x.num_parts(ob), false);
-        for (Part p = 0; p < l_state.num_parts(ob); ++p) {
-            Part img = m(ob, p);
-            if (!kept[p]) {
-                deleted[o][img] = true;
-            }
-            if (first_preimage[img] == kNoPart) {
-                first_preimage[img] = p;
-                continue;
-            }
-            Part q = first_preimage[img];
-            if (!kept[p] || !kept[q]) {
-                Part del = kept[p] ? q : p;
-                Part other = del == p ? q : p;
-                out.push_back(
-                    {GluingViolationKind::Identification, ob, del, other, HomId(), img,
-                     fmt::format("identification: {} {} is deleted but the match also sends {} "
-                                 "to {}",
-                                 s.ob(ob).name, l_state.part_label(ob, del),
-                                 l_state.part_label(ob, other), x.part_label(ob, img))});
-            }
-        }
-    }
-    // Dangling: a surviving part of X refers to a deleted part.
-    for (std::uint32_t h = 0; h < s.num_homs(); ++h) {
-        HomId f(h);
-        ObId dom = s.hom(f).dom, codom = s.hom(f).codom;
-        for (Part p = 0; p < x.num_parts(dom); ++p) {
-            Part t = x.subpart(f, p);
-            if (deleted[dom.index()][p] || t == kNoPart || !deleted[codom.index()][t]) {
-                continue;
-            }
-            out.push_back({GluingViolationKind::Dangling, dom, p, kNoPart, f, t,
-                           fmt::format("dangling: {} {} refers through {} to {} {}, which the "
-                                       "rule deletes",
-                                       s.ob(dom).name, x.part_label(dom, p), s.hom(f).name,
-                                       s.ob(codom).name, x.part_label(codom, t))});
-        }
-    }
-    return out;
-}
-
-Result<PushoutComplement> pushout_complement(const ACSet& k, const ACSet& l_state, const ACSet& x,
-                                             const ACSetMorphism& l, const ACSetMorphism& m) {
-    auto violations = gluing_violations(k, l_state, x, l, m);
-    if (!violations.empty()) {
-        std::string reason;
-        for (const auto& v : violations) {
-            reason += (reason.empty() ? "" : "; ") + v.reason;
-        }
-        return fail(reason);
-    }
-    const auto& s = x.schema();
-    std::vector<std::vector<bool>> deleted(s.num_obs());
-    for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
-        ObId ob(o);
-        deleted[o].assign(x.num_parts(ob), true);
-        std::vector<bool> kept(l_state.num_parts(ob), false);
-        for (Part p = 0; p < k.num_parts(ob); ++p) {
-            kept[l(ob, p)] = true;
-        }
-        std::vector<bool> hit(x.num_parts(ob), false);
-        for (Part p = 0; p < l_state.num_parts(ob); ++p) {
-            hit[m(ob, p)] = true;
-            if (kept[p]) {
-                deleted[o][m(ob, p)] = false;
-            }
-        }
-        for (Part p = 0; p < x.num_parts(ob); ++p) {
-            if (!hit[p]) {
-                deleted[o][p] = false;
-            }
-        }
-    }
-    PushoutComplement out{ACSet(x.schema_ptr()), {}, {}};
-    ACSet& z = out.z;
-    out.z_to_x.components.resize(s.num_obs());
-    std::vector<std::vector<Part>> renumber(s.num_obs());
-    for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
-        ObId ob(o);
-        renumber[o].assign(x.num_parts(ob), kNoPart);
-        for (Part p = 0; p < x.num_parts(ob); ++p) {
-            if (!deleted[o][p]) {
-                renumber[o][p] = z.add_part(ob, x.part_name(ob, p));
-                out.z_to_x.components[o].push_back(p);
-            }
-        }
-    }
-    for (std::uint32_t t = 0; t < s.num_attr_types(); ++t) {
-        AttrTypeId ty(t);
-        for (std::uint32_t j = 0; j < x.num_vars(ty); ++j) {
-            z.add_var(ty, x.var_name(ty, j));
-        }
-    }
-    out.z_to_x.var_components = hom::identity(z).var_components;
-    for (std::uint32_t h = 0; h < s.num_homs(); ++h) {
-        HomId f(h);
-        ObId dom = s.hom(f).dom, codom = s.hom(f).codom;
-        for (Part p = 0; p < x.num_parts(dom); ++p) {
-            if (renumber[dom.index()][p] != kNoPart && x.subpart(f, p) != kNoPart) {
-                z.set_subpart(f, renumber[dom.index()][p],
-                              renumber[codom.index()][x.subpart(f, p)]);
-            }
-        }
-    }
-    for (std::uint32_t at = 0; at < s.num_attrs(); ++at) {
-        AttrId attr(at);
-        ObId dom = s.attr(attr).dom;
-        for (Part p = 0; p < x.num_parts(dom); ++p) {
-            if (renumber[dom.index()][p] != kNoPart) {
-                z.set_subpart(attr, renumber[dom.index()][p], x.subpart(attr, p));
-            }
-        }
-    }
-    out.k_to_z.components.resize(s.num_obs());
-    for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
-        ObId ob(o);
-        for (Part p = 0; p < k.num_parts(ob); ++p) {
-            out.k_to_z.components[o].push_back(renumber[o][m(ob, l(ob, p))]);
-        }
-    }
-    out.k_to_z.var_components.resize(s.num_attr_types());
-    for (std::uint32_t t = 0; t < s.num_attr_types(); ++t) {
-        AttrTypeId ty(t);
-        for (std::uint32_t j = 0; j < k.num_vars(ty); ++j) {
-            Value v = l.var(ty, j);
-            out.k_to_z.var_components[t].push_back(v.is_var() ? m.var(ty, v.var_index()) : v);
-        }
-    }
-    return out;
 }
 
 } // namespace catplan::colimit

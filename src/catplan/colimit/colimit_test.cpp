@@ -164,3 +164,70 @@ TEST(PushoutComplement, ReportsIdentificationOfADeletedPart) {
 
 } // namespace
 } // namespace catplan::colimit
+
+namespace catplan::colimit {
+namespace {
+
+// A kept edge whose target is deleted: dangling, unless the complement opens that hom (the rule
+// redirects it); an open attribute is unset in Z, the others keep X's value.
+TEST(PushoutComplement, OpenCellsAreUnsetAndNeverDangle) {
+    Labelled g;
+    ACSet l = g.path({"x", "y"}); // L: x -> y, delete y, keep x and the edge
+    ACSet k(g.s);
+    k.add_part(g.v);
+    Part ke = k.add_part(g.e);
+    k.set_subpart(g.src, ke, 0); // the target is left unset in K
+    ACSet x = g.path({"x", "y"});
+    x.set_subpart(g.label, x.add_part(g.v), Value::string("w"));
+    auto lk = g.map({0}, {0}, {});
+    auto m = g.map({0, 1}, {0}, {});
+    ASSERT_EQ(gluing_violations(k, l, x, lk, m).size(), 1u);
+    ComplementOptions open;
+    open.open.homs.resize(2);
+    open.open.homs[g.tgt.index()] = {0};
+    open.open.attrs.resize(1);
+    open.open.attrs[g.label.index()] = {0};
+    auto d = deletion(k, l, x, lk, m, open);
+    EXPECT_TRUE(d.violations.empty());
+    EXPECT_EQ(d.parts[g.v.index()], std::vector<Part>{1});
+    auto pc = pushout_complement(k, l, x, lk, m, open);
+    ASSERT_TRUE(pc.has_value()) << pc.error();
+    EXPECT_EQ(pc->z.num_parts(g.v), 2u);
+    ASSERT_EQ(pc->z.num_parts(g.e), 1u);
+    EXPECT_EQ(pc->z.subpart(g.src, 0), 0u);
+    EXPECT_EQ(pc->z.subpart(g.tgt, 0), kNoPart) << "the open hom";
+    EXPECT_TRUE(pc->z.subpart(g.label, 0).is_unset()) << "the open attribute";
+    EXPECT_EQ(pc->z.subpart(g.label, 1), Value::string("w"));
+    EXPECT_TRUE(hom::is_natural(pc->k_to_z, k, pc->z));
+}
+
+// SPO: deleting the middle vertex of x -> y -> w deletes both edges; with a kept edge into it
+// the cascade is a violation naming the kept edge.
+TEST(Deletion, CascadeDeletesReferringPartsAndStopsAtKeptOnes) {
+    Labelled g;
+    ACSet l = g.path({"y"});
+    ACSet k(g.s);
+    ACSet x = g.path({"x", "y", "w"});
+    ComplementOptions spo;
+    spo.cascade = true;
+    auto d = deletion(k, l, x, g.map({}, {}, {}), g.map({1}, {}, {}), spo);
+    EXPECT_TRUE(d.violations.empty());
+    EXPECT_EQ(d.parts[g.v.index()], std::vector<Part>{1});
+    EXPECT_EQ(d.parts[g.e.index()], (std::vector<Part>{0, 1}));
+    auto pc = pushout_complement(k, l, x, g.map({}, {}, {}), g.map({1}, {}, {}), spo);
+    ASSERT_TRUE(pc.has_value());
+    EXPECT_EQ(pc->z.num_parts(g.e), 0u);
+
+    ACSet l2 = g.path({"x", "y"}); // keep the edge and x, delete y
+    ACSet k2(g.s);
+    k2.add_part(g.v);
+    k2.set_subpart(g.src, k2.add_part(g.e), 0);
+    auto bad = deletion(k2, l2, x, g.map({0}, {0}, {}), g.map({0, 1}, {0}, {}), spo);
+    ASSERT_EQ(bad.violations.size(), 1u);
+    EXPECT_EQ(bad.violations[0].kind, GluingViolationKind::Cascade);
+    EXPECT_EQ(bad.violations[0].part, 0u);
+    EXPECT_EQ(bad.violations[0].hom, g.tgt);
+}
+
+} // namespace
+} // namespace catplan::colimit

@@ -52,7 +52,7 @@ std::optional<ACSet> build_colimit(Elaborator& ctx, const MacroCall& form,
                                    const std::shared_ptr<Schema>& s, SourceRange name_range) {
     DiagnosticSink& sink = ctx.sink;
     std::size_t errors = sink.num_errors();
-    Colimit c(*s, ctx.inferred_kinds(*s));
+    Colimit c(s, ctx.inferred_kinds(*s));
     // Generators first, wherever they are written, so that they come first in part order.
     for (const auto& st : form.body) {
         if (st.is_binary("::")) {
@@ -74,7 +74,7 @@ std::optional<ACSet> build_colimit(Elaborator& ctx, const MacroCall& form,
     if (sink.num_errors() != errors || !c.complete(name_range, ctx.options.max_fresh_parts, sink)) {
         return std::nullopt;
     }
-    return c.build(s);
+    return c.build();
 }
 
 // ---- @acset -------------------------------------------------------------------------------------

@@ -38,40 +38,20 @@ std::string path_term(const Schema& s, const Path& p) {
 
 } // namespace
 
-namespace {
-
-// Parts of `to` outside the image of f (the parts a rule deletes from L or creates in R).
-std::size_t outside_image(const hom::ACSetMorphism& f, const ACSet& to) {
-    std::size_t n = 0;
-    const Schema& s = to.schema();
-    for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
-        std::vector<bool> hit(to.num_parts(ObId(o)), false);
-        if (o < f.components.size()) {
-            for (Part p : f.components[o]) {
-                if (p < hit.size()) {
-                    hit[p] = true;
-                }
-            }
-        }
-        for (bool h : hit) {
-            n += h ? 0 : 1;
-        }
-    }
-    return n;
-}
-
-} // namespace
-
 std::string summarize_rule(const rewrite::Rule& rule) {
     std::vector<std::string> params;
     for (const auto& p : rule.parameters) {
         params.push_back(p.name);
     }
+    std::size_t deleted = 0, created = 0;
+    for (std::uint32_t o = 0; o < rule.L.schema().num_obs(); ++o) {
+        deleted += rule.deleted_parts(ObId(o)).size();
+        created += rule.created_parts(ObId(o)).size();
+    }
     std::string out = fmt::format("rule {}({}) on {}: L {}, K {}, R {}, deletes {}, creates {}",
                                   rule.name, fmt::join(params, ", "), rule.L.schema().name(),
                                   plural(rule.L.total_parts(), "part"), rule.K.total_parts(),
-                                  rule.R.total_parts(), outside_image(rule.l, rule.L),
-                                  outside_image(rule.r, rule.R));
+                                  rule.R.total_parts(), deleted, created);
     std::size_t nacs = 0, pacs = 0, exprs = 0;
     for (const auto& c : rule.conditions) {
         ++(c.negative ? nacs : pacs);

@@ -2,6 +2,7 @@
 // NAC and PAC (or the slides' L, K, R, l, r) are partial presentations; L, K and R are their
 // states, l : K -> L and r : K -> R the unique morphisms their generators' names determine.
 
+#include "catplan/colimit/colimit.hpp"
 #include "catplan/hom/hom_search.hpp"
 #include "catplan/lang/detail/colimit.hpp"
 #include "catplan/lang/detail/elaboration.hpp"
@@ -189,9 +190,9 @@ public:
           schema_(src.schema),
           sink_(&ctx.sink),
           errors_(ctx.sink.num_errors()),
-          lc_(*schema_, ctx.inferred_kinds(*schema_)),
-          rc_(*schema_, ctx.inferred_kinds(*schema_)),
-          kc_(*schema_, ctx.inferred_kinds(*schema_)) {
+          lc_(schema_, ctx.inferred_kinds(*schema_)),
+          rc_(schema_, ctx.inferred_kinds(*schema_)),
+          kc_(schema_, ctx.inferred_kinds(*schema_)) {
         pre_name_ = src.span_form ? "L" : "Pre";
         keep_name_ = src.span_form ? "K" : "Keep";
         eff_name_ = src.span_form ? "R" : "Eff";
@@ -204,13 +205,13 @@ public:
         if (failed()) {
             return nullptr;
         }
-        ACSet L = lc_.build_partial(schema_);
+        ACSet L = lc_.build_partial();
         for (auto& [st, e] : translated_) {
             fix_inputs(lc_, e);
             // After fix_inputs: a cell Pre fixes is a constant too.
             check_constants(e, value_side(*st).range, *sink_);
         }
-        ACSet R = rc_.build_partial(schema_);
+        ACSet R = rc_.build_partial();
         elaborate_keep();
         if (failed()) {
             return nullptr;
@@ -219,7 +220,7 @@ public:
         rule->name = src_.name;
         rule->range = src_.name_range;
         rule->L = std::move(L);
-        rule->K = kc_.build_partial(schema_);
+        rule->K = kc_.build_partial();
         rule->R = std::move(R);
         if (!legs(*rule)) {
             return nullptr;
@@ -279,7 +280,7 @@ private:
         std::vector<const Expr*> expr_stmts;
         {
             // Collect Eff's expression statements first (R's elaboration reports the rest).
-            Colimit scratch(*schema_, ctx_.inferred_kinds(*schema_));
+            Colimit scratch(schema_, ctx_.inferred_kinds(*schema_));
             with_sink(false, [&] { equations_all(scratch, eff_, false, &expr_stmts); });
         }
         for (const Expr* st : expr_stmts) {
@@ -396,7 +397,7 @@ private:
 
     // An application condition: N = Pre ∪ the condition's statements; n : L -> N by names.
     bool condition(rewrite::Rule& rule, const RuleBlock& b) {
-        Colimit nc(*schema_, ctx_.inferred_kinds(*schema_));
+        Colimit nc(schema_, ctx_.inferred_kinds(*schema_));
         nc.allow_redeclare();
         declare_all(nc, pre_, false);
         declare_all(nc, &b, true);
@@ -411,7 +412,7 @@ private:
         if (failed()) {
             return false;
         }
-        ACSet N = nc.build_partial(schema_);
+        ACSet N = nc.build_partial();
         hom::HomSearchOptions nopt;
         if (!bind_names(lc_, nc, nullptr, pre_name_, b.name, nopt)) {
             return false;
@@ -645,15 +646,10 @@ private:
     bool complete_created(ACSet& r_state, const hom::ACSetMorphism& r, SourceRange at) {
         const Schema& s = r_state.schema();
         std::vector<std::pair<ObId, Part>> work;
+        auto created = colimit::parts_outside_image(r, r_state);
         for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
-            std::vector<bool> kept(r_state.num_parts(ObId(o)), false);
-            for (Part p : r.components[o]) {
-                kept[p] = true;
-            }
-            for (Part p = 0; p < kept.size(); ++p) {
-                if (!kept[p]) {
-                    work.emplace_back(ObId(o), p);
-                }
+            for (Part p : created[o]) {
+                work.emplace_back(ObId(o), p);
             }
         }
         std::size_t fresh = 0;

@@ -322,27 +322,6 @@ void general(const Query& q, const ACSet& x, Tuples& tu) {
     tu.vars = std::move(sorted_vars);
 }
 
-// The first object variable of a query, if any.
-std::optional<std::size_t> first_object_node(const Query& q) {
-    for (std::size_t i = 0; i < q.nodes().size(); ++i) {
-        if (!q.nodes()[i].is_value) {
-            return i;
-        }
-    }
-    return std::nullopt;
-}
-
-// The part reached from p along a path of X's homs, or kNoPart once a hom on the way is unset.
-Part follow(const ACSet& x, Part p, const std::vector<HomId>& homs) {
-    for (HomId h : homs) {
-        if (p == kNoPart) {
-            return kNoPart;
-        }
-        p = x.subpart(h, p);
-    }
-    return p;
-}
-
 // The column of a path of X's homs out of an object with n parts: p goes to follow(x, p, path).
 // Composed a column at a time: a copy of the first hom's column, then one gather per further hom.
 std::vector<Part> path_column(const ACSet& x, std::size_t n, const std::vector<HomId>& path) {
@@ -368,7 +347,7 @@ std::vector<Part> path_column(const ACSet& x, std::size_t n, const std::vector<H
 // first object variable. Empty (no names) when X names no part of that variable's object.
 std::vector<Symbol> tuple_names(const Query& q, const Tuples& tu, const ACSet& x) {
     std::vector<Symbol> names;
-    auto n = first_object_node(q);
+    auto n = q.first_object_node();
     if (!n || tu.count == 0) {
         return names;
     }
@@ -447,7 +426,7 @@ MigratedState migrate_state(const SchemaMap& f, const ACSet& x) {
         const ACSetMorphism& qf = *im.morphism;
         const Query& qd = f.query(d);
         bool single = td.mode == Tuples::Mode::Plain || td.mode == Tuples::Mode::Scan;
-        std::optional<std::size_t> dn = first_object_node(qd);
+        std::optional<std::size_t> dn = qd.first_object_node();
         std::vector<Part> col(tc.count, kNoPart);
         for (std::size_t i = 0; i < tc.count; ++i) {
             if (single && dn) {
@@ -652,7 +631,7 @@ Result<rewrite::Rule> migrate(const SchemaMap& f, const rewrite::Rule& rule) {
     for (const auto& p : rule.parameters) {
         for (std::uint32_t c = 0; c < t.num_obs(); ++c) {
             const Query& q = f.query(ObId(c));
-            auto n = first_object_node(q);
+            auto n = q.first_object_node();
             if (!n || q.nodes()[*n].ob != p.ob) {
                 continue;
             }
@@ -698,7 +677,7 @@ Result<ACSetMorphism> migrate_match(const SchemaMap& f, const rewrite::Rule& rul
 
 std::optional<TupleOrigins> tuple_origins(const SchemaMap& f, const MigratedState& x, ObId c) {
     const Query& q = f.query(c);
-    auto n = first_object_node(q);
+    auto n = q.first_object_node();
     if (!n) {
         return std::nullopt;
     }

@@ -2,8 +2,6 @@
 
 #include "catplan/base/assert.hpp"
 
-#include <algorithm>
-#include <map>
 #include <utility>
 
 namespace catplan::migrate {
@@ -25,12 +23,31 @@ Term Term::constant(Value value, SourceRange range) {
     return t;
 }
 
-Query::Query(SchemaPtr source) : source_(std::move(source)) {}
+Query::Query(SchemaPtr source) : source_(source), shape_(std::move(source)) {}
 
 Query Query::representable(SchemaPtr source, ObId ob, std::string name) {
     Query q(std::move(source));
     q.add_variable(std::move(name), ob);
     return q;
+}
+
+std::optional<std::size_t> Query::first_object_node() const {
+    for (std::size_t i = 0; i < nodes_.size(); ++i) {
+        if (!nodes_[i].is_value) {
+            return i;
+        }
+    }
+    return std::nullopt;
+}
+
+Part follow(const ACSet& x, Part p, const std::vector<HomId>& homs) {
+    for (HomId h : homs) {
+        if (p == kNoPart) {
+            return kNoPart;
+        }
+        p = x.subpart(h, p);
+    }
+    return p;
 }
 
 std::optional<std::size_t> Query::find_node(std::string_view name) const {
@@ -42,14 +59,6 @@ std::optional<std::size_t> Query::find_node(std::string_view name) const {
     return std::nullopt;
 }
 
-std::uint32_t Query::new_elem(Elem e) {
-    auto id = uf_.make_set();
-    literal_.push_back(e.literal);
-    elems_.push_back(std::move(e));
-    built_ = false;
-    return id;
-}
-
 bool Query::add_variable(std::string name, ObId ob, SourceRange range) {
     if (find_node(name)) {
         problems_.push_back({"variable '" + name + "' declared twice", range});
@@ -57,7 +66,9 @@ bool Query::add_variable(std::string name, ObId ob, SourceRange range) {
     }
     auto node = static_cast<std::uint32_t>(nodes_.size());
     nodes_.push_back({std::move(name), false, ob, AttrTypeId{}, range});
-    node_elems_.push_back(new_elem({false, ob.index(), node, {}, std::nullopt, std::nullopt}));
+    node_handles_.push_back({false, shape_.add_part(ob)});
+    part_origin_.push_back({node, {}, std::nullopt});
+    built_.reset();
     return true;
 }
 
@@ -68,30 +79,34 @@ bool Query::add_value_variable(std::string name, AttrTypeId type, SourceRange ra
     }
     auto node = static_cast<std::uint32_t>(nodes_.size());
     nodes_.push_back({std::move(name), true, ObId{}, type, range});
-    node_elems_.push_back(new_elem({true, type.index(), node, {}, std::nullopt, std::nullopt}));
+    node_handles_.push_back({true, shape_.add_value(type)});
+    value_origin_.push_back({node, {}, std::nullopt});
+    built_.reset();
     return true;
 }
 
-std::uint32_t Query::follow(std::uint32_t from, std::uint32_t label, bool is_attr, Elem proto) {
-    std::uint32_t root = uf_.find(from);
-    for (const Edge& e : edges_) {
-        if (e.label == label && e.is_attr == is_attr && uf_.find(e.src) == root) {
-            return e.tgt;
-        }
+// The last step of `origin` (its attribute, else its last hom) from `from`; a node it makes
+// remembers `origin`.
+colimit::Node Query::follow(colimit::Node from, Origin origin) {
+    bool is_attr = origin.attr.has_value();
+    colimit::Node to =
+        is_attr ? shape_.attr(from, *origin.attr) : shape_.hom(from, origin.homs.back());
+    auto& origins = is_attr ? value_origin_ : part_origin_;
+    if ((is_attr ? shape_.num_value_nodes() : shape_.num_part_nodes()) > origins.size()) {
+        origins.push_back(std::move(origin));
+        built_.reset();
     }
-    std::uint32_t t = new_elem(std::move(proto));
-    edges_.push_back({from, label, is_attr, t});
-    return t;
+    return to;
 }
 
-std::optional<std::uint32_t> Query::resolve(const Term& t, SourceRange where) {
+std::optional<Query::Resolved> Query::resolve(const Term& t, SourceRange where) {
     SourceRange at = t.range.valid() ? t.range : where;
     if (t.is_literal()) {
         if (!t.literal.is_concrete()) {
             problems_.push_back({"a literal must be a concrete value", at});
             return std::nullopt;
         }
-        return new_elem({true, UINT32_MAX, UINT32_MAX, {}, std::nullopt, t.literal});
+        return Resolved{std::nullopt, t.literal};
     }
     auto node = find_node(t.var);
     if (!node) {
@@ -106,11 +121,12 @@ std::optional<std::uint32_t> Query::resolve(const Term& t, SourceRange where) {
                 {"'" + t.var + "' is a value: no hom or attribute applies to it", at});
             return std::nullopt;
         }
-        return node_elems_[*node];
+        return Resolved{node_handles_[*node], Value()};
     }
-    std::uint32_t cur = node_elems_[*node];
+    colimit::Node cur = node_handles_[*node].node;
     ObId ob = n.ob;
     std::vector<HomId> prefix;
+    auto var = static_cast<std::uint32_t>(*node);
     for (HomId h : t.homs) {
         if (s.hom(h).dom != ob) {
             problems_.push_back({"hom '" + s.hom(h).name + "' does not start at '" + s.ob(ob).name +
@@ -120,9 +136,7 @@ std::optional<std::uint32_t> Query::resolve(const Term& t, SourceRange where) {
         }
         prefix.push_back(h);
         ob = s.hom(h).codom;
-        cur = follow(cur, h.index(), false,
-                     {false, ob.index(), static_cast<std::uint32_t>(*node), prefix, std::nullopt,
-                      std::nullopt});
+        cur = follow(cur, {var, prefix, std::nullopt});
     }
     if (t.attr) {
         if (s.attr(*t.attr).dom != ob) {
@@ -131,61 +145,32 @@ std::optional<std::uint32_t> Query::resolve(const Term& t, SourceRange where) {
                                  at});
             return std::nullopt;
         }
-        cur = follow(cur, t.attr->index(), true,
-                     {true, s.attr(*t.attr).codom.index(), static_cast<std::uint32_t>(*node),
-                      prefix, t.attr, std::nullopt});
+        return Resolved{Handle{true, follow(cur, {var, prefix, t.attr})}, Value()};
     }
-    return cur;
+    return Resolved{Handle{false, cur}, Value()};
 }
 
 std::optional<std::uint32_t> Query::add_term(const Term& term) {
     auto r = resolve(term, term.range);
-    if (r) {
-        if (elems_[*r].sort == UINT32_MAX) {
-            problems_.push_back({"a bare literal has no place in the query", term.range});
-            return std::nullopt;
-        }
-        close(term.range);
+    if (!r) {
+        return std::nullopt;
     }
-    return r;
+    if (!r->handle) {
+        problems_.push_back({"a bare literal has no place in the query", term.range});
+        return std::nullopt;
+    }
+    handles_.push_back(*r->handle);
+    return static_cast<std::uint32_t>(handles_.size() - 1);
 }
 
-bool Query::merge(std::uint32_t a, std::uint32_t b, SourceRange where) {
-    a = uf_.find(a);
-    b = uf_.find(b);
-    if (a == b) {
-        return true;
-    }
-    auto& la = literal_[a];
-    auto& lb = literal_[b];
-    bool ok = true;
-    std::optional<Value> lit = la ? la : lb;
-    if (la && lb && !(*la == *lb)) {
-        problems_.push_back(
-            {"two different literals for one value: " + la->to_string() + " and " + lb->to_string(),
-             where});
-        ok = false;
-    }
-    uf_.union_sets(a, b);
-    literal_[uf_.find(a)] = lit;
-    built_ = false;
-    return ok;
-}
-
-void Query::close(SourceRange where) {
-    // Congruence closure: two edges with the same label out of one class reach one class.
-    bool changed = true;
-    while (changed) {
-        changed = false;
-        std::map<std::tuple<std::uint32_t, std::uint32_t, bool>, std::uint32_t> seen;
-        for (const Edge& e : edges_) {
-            auto key = std::make_tuple(uf_.find(e.src), e.label, e.is_attr);
-            auto [it, fresh] = seen.emplace(key, e.tgt);
-            if (!fresh && uf_.find(it->second) != uf_.find(e.tgt)) {
-                merge(it->second, e.tgt, where);
-                changed = true;
-            }
-        }
+// The presentation's new problems (two literals that met), in the query's words.
+void Query::take_problems() {
+    const auto& found = shape_.problems();
+    for (; problems_taken_ < found.size(); ++problems_taken_) {
+        const auto& p = found[problems_taken_];
+        problems_.push_back({"two different literals for one value: " + p.first.to_string() +
+                                 " and " + p.second.to_string(),
+                             p.where});
     }
 }
 
@@ -196,26 +181,29 @@ bool Query::add_equation(const Term& lhs, const Term& rhs, SourceRange range) {
     if (!a || !b) {
         return false;
     }
-    const Elem& ea = elems_[*a];
-    const Elem& eb = elems_[*b];
-    auto sort_name = [&](const Elem& e) -> std::string {
-        if (e.sort == UINT32_MAX) {
+    // A side's sort: an object or attribute type, or none for a literal.
+    auto sort_name = [&](const Resolved& r) -> std::string {
+        if (!r.handle) {
             return "a literal";
         }
-        return e.is_value ? "'" + source_->attr_type(AttrTypeId(e.sort)).name + "'"
-                          : "'" + source_->ob(ObId(e.sort)).name + "'";
+        return r.handle->is_value
+                   ? "'" + source_->attr_type(shape_.value_type(r.handle->node)).name + "'"
+                   : "'" + source_->ob(shape_.part_ob(r.handle->node)).name + "'";
     };
-    bool compatible = ea.is_value == eb.is_value &&
-                      (ea.sort == eb.sort || ea.sort == UINT32_MAX || eb.sort == UINT32_MAX);
-    if (ea.sort == UINT32_MAX && eb.sort == UINT32_MAX) {
-        compatible = false;
-    }
-    if (compatible && (ea.sort == UINT32_MAX || eb.sort == UINT32_MAX)) {
-        // A literal must have the kind of the value it fixes, when that kind is known.
-        const Elem& typed = ea.sort == UINT32_MAX ? eb : ea;
-        const Value& lit = ea.sort == UINT32_MAX ? *ea.literal : *eb.literal;
-        auto kind = source_->attr_type(AttrTypeId(typed.sort)).kind;
-        if (kind != schema::ValueKind::Unknown && lit.kind() != kind) {
+    bool compatible = a->handle || b->handle;
+    if (a->handle && b->handle) {
+        const Handle &ha = *a->handle, &hb = *b->handle;
+        compatible = ha.is_value == hb.is_value &&
+                     (ha.is_value ? shape_.value_type(ha.node) == shape_.value_type(hb.node)
+                                  : shape_.part_ob(ha.node) == shape_.part_ob(hb.node));
+    } else if (compatible) {
+        // A literal must fix a value, of its kind when that kind is known.
+        const Handle& typed = a->handle ? *a->handle : *b->handle;
+        const Value& lit = a->handle ? b->literal : a->literal;
+        compatible = typed.is_value;
+        auto kind = compatible ? source_->attr_type(shape_.value_type(typed.node)).kind
+                               : schema::ValueKind::Unknown;
+        if (compatible && kind != schema::ValueKind::Unknown && lit.kind() != kind) {
             problems_.push_back(
                 {"literal " + lit.to_string() + " is not a " + std::string(schema::to_string(kind)),
                  rhs.range.valid() ? rhs.range : range});
@@ -224,13 +212,21 @@ bool Query::add_equation(const Term& lhs, const Term& rhs, SourceRange range) {
     }
     if (!compatible) {
         problems_.push_back(
-            {"the two sides have different types: " + sort_name(ea) + " and " + sort_name(eb),
+            {"the two sides have different types: " + sort_name(*a) + " and " + sort_name(*b),
              range});
         return false;
     }
     ++num_equations_;
-    merge(*a, *b, range);
-    close(range);
+    if (!a->handle || !b->handle) {
+        const Handle& typed = a->handle ? *a->handle : *b->handle;
+        shape_.set_literal(typed.node, a->handle ? b->literal : a->literal, {}, range);
+    } else if (a->handle->is_value) {
+        shape_.equate_values(a->handle->node, b->handle->node, range);
+    } else {
+        shape_.equate_parts(a->handle->node, b->handle->node, range);
+    }
+    built_.reset();
+    take_problems();
     return problems_.size() == before;
 }
 
@@ -239,92 +235,53 @@ void Query::build() const {
         return;
     }
     const schema::Schema& s = *source_;
-    ACSet st(source_);
-    elem_slot_.assign(elems_.size(), UINT32_MAX);
+    built_ = shape_.build();
     reps_.assign(s.num_obs(), {});
     vreps_.assign(s.num_attr_types(), {});
-    // Classes in order of their smallest element (the root): nodes come first, in order.
-    for (std::uint32_t e = 0; e < elems_.size(); ++e) {
-        if (uf_.find(e) != e) {
-            continue;
-        }
-        // A class's sort: a literal element alone has none; take any typed member.
-        std::uint32_t sort = UINT32_MAX;
-        bool is_value = elems_[e].is_value;
-        for (std::uint32_t m = e; m < elems_.size(); ++m) {
-            if (uf_.find(m) == e && elems_[m].sort != UINT32_MAX) {
-                sort = elems_[m].sort;
-                is_value = elems_[m].is_value;
-                break;
-            }
-        }
-        if (sort == UINT32_MAX) {
-            continue; // a literal that nothing else refers to
-        }
-        if (!is_value) {
-            elem_slot_[e] = st.add_part(ObId(sort));
-            reps_[sort].push_back(e);
-        } else if (!literal_[e]) {
-            elem_slot_[e] = st.add_var(AttrTypeId(sort)).var_index();
-            vreps_[sort].push_back(e);
+    for (colimit::Node n = 0; n < shape_.num_part_nodes(); ++n) {
+        if (shape_.find_part(n) == n) {
+            reps_[shape_.part_ob(n).index()].push_back(n);
         }
     }
-    for (const Edge& ed : edges_) {
-        std::uint32_t src = uf_.find(ed.src), tgt = uf_.find(ed.tgt);
-        Part p = elem_slot_[src];
-        if (ed.is_attr) {
-            Value v = literal_[tgt] ? *literal_[tgt] : Value::var(elem_slot_[tgt]);
-            st.set_subpart(AttrId(ed.label), p, v);
-        } else {
-            st.set_subpart(HomId(ed.label), p, elem_slot_[tgt]);
+    for (colimit::Node v = 0; v < shape_.num_value_nodes(); ++v) {
+        if (shape_.find_value(v) == v && !shape_.literal(v)) {
+            vreps_[shape_.value_type(v).index()].push_back(v);
         }
     }
-    state_.emplace(std::move(st));
-    built_ = true;
 }
 
 const ACSet& Query::state() const {
     build();
-    return *state_;
+    return built_->state;
 }
 
-QueryElement Query::locate(std::uint32_t handle) const {
+QueryElement Query::locate(const Handle& h) const {
     build();
-    std::uint32_t r = uf_.find(handle);
     QueryElement out;
-    // The class's sort may come from a member other than the handle (a literal joined a value).
-    std::uint32_t sort = elems_[handle].sort;
-    bool is_value = elems_[handle].is_value;
-    if (sort == UINT32_MAX) {
-        for (std::uint32_t m = 0; m < elems_.size(); ++m) {
-            if (uf_.find(m) == r && elems_[m].sort != UINT32_MAX) {
-                sort = elems_[m].sort;
-                is_value = elems_[m].is_value;
-                break;
-            }
-        }
-    }
-    out.is_value = is_value;
-    if (!is_value) {
-        out.ob = ObId(sort);
-        out.part = elem_slot_[r];
+    out.is_value = h.is_value;
+    if (h.is_value) {
+        out.type = shape_.value_type(h.node);
+        out.value = built_->value_of[h.node];
     } else {
-        out.type = AttrTypeId(sort);
-        out.value = literal_[r] ? *literal_[r] : Value::var(elem_slot_[r]);
+        out.ob = shape_.part_ob(h.node);
+        out.part = built_->part_of[h.node];
     }
     return out;
 }
 
+QueryElement Query::locate(std::uint32_t handle) const {
+    return locate(handles_[handle]);
+}
+
+QueryElement Query::locate_node(std::size_t i) const {
+    return locate(node_handles_[i]);
+}
+
 Term Query::witness(ObId ob, Part p) const {
     build();
-    std::uint32_t r = reps_[ob.index()][p];
-    // The smallest member reached from a node (the root itself unless it is a literal).
-    for (std::uint32_t m = r; m < elems_.size(); ++m) {
-        if (uf_.find(m) == r && elems_[m].node != UINT32_MAX) {
-            return Term::path(nodes_[elems_[m].node].name, elems_[m].homs);
-        }
-    }
-    CATPLAN_UNREACHABLE("a part of a query is reached from no node");
+    // The first node of a class is the one first reached, so its origin is the shortest path.
+    const Origin& o = part_origin_[reps_[ob.index()][p]];
+    return Term::path(nodes_[o.node].name, o.homs);
 }
 
 Term Query::witness_value(AttrTypeId t, const Value& v) const {
@@ -332,18 +289,13 @@ Term Query::witness_value(AttrTypeId t, const Value& v) const {
     if (!v.is_var()) {
         return Term::constant(v);
     }
-    std::uint32_t r = vreps_[t.index()][v.var_index()];
-    for (std::uint32_t m = r; m < elems_.size(); ++m) {
-        if (uf_.find(m) == r && elems_[m].node != UINT32_MAX) {
-            return Term::path(nodes_[elems_[m].node].name, elems_[m].homs, elems_[m].attr);
-        }
-    }
-    CATPLAN_UNREACHABLE("a value of a query is reached from no node");
+    const Origin& o = value_origin_[vreps_[t.index()][v.var_index()]];
+    return Term::path(nodes_[o.node].name, o.homs, o.attr);
 }
 
 bool Query::is_plain() const {
-    return !empty_ && nodes_.size() == 1 && !nodes_[0].is_value && elems_.size() == 1 &&
-           num_equations_ == 0;
+    return !empty_ && nodes_.size() == 1 && !nodes_[0].is_value &&
+           shape_.num_part_nodes() + shape_.num_value_nodes() == 1 && num_equations_ == 0;
 }
 
 } // namespace catplan::migrate

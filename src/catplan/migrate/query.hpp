@@ -26,7 +26,7 @@
 #include "catplan/acset/value.hpp"
 #include "catplan/base/id.hpp"
 #include "catplan/base/source.hpp"
-#include "catplan/base/union_find.hpp"
+#include "catplan/colimit/presentation.hpp"
 
 #include <optional>
 #include <string>
@@ -113,6 +113,9 @@ public:
     /// The index of the variable with this name.
     std::optional<std::size_t> find_node(std::string_view name) const;
 
+    /// The first object variable, if any (the one a tuple of the query is named after).
+    std::optional<std::size_t> first_object_node() const;
+
     /// Every problem met while building, in order.
     const std::vector<QueryProblem>& problems() const { return problems_; }
 
@@ -122,7 +125,7 @@ public:
     QueryElement locate(std::uint32_t handle) const;
 
     /// Where node i lands in state().
-    QueryElement locate_node(std::size_t i) const { return locate(node_elems_[i]); }
+    QueryElement locate_node(std::size_t i) const;
 
     /// A term from a node that reaches part p of ob in state() (used to re-express morphisms).
     Term witness(ObId ob, Part p) const;
@@ -134,47 +137,49 @@ public:
     bool is_plain() const;
 
 private:
-    struct Elem {
-        bool is_value;
-        std::uint32_t sort; // ObId or AttrTypeId index
-        // How the element was first reached: from node `node` along `homs` (then `attr`).
+    // A node of the shape: a part or a value node of the presentation.
+    struct Handle {
+        bool is_value = false;
+        colimit::Node node = colimit::kNoNode;
+    };
+
+    // How a node of the shape was first reached: from variable `node` along `homs` (then `attr`).
+    struct Origin {
         std::uint32_t node;
         std::vector<HomId> homs;
         std::optional<AttrId> attr;
-        std::optional<Value> literal; // a literal term's constant
     };
 
-    struct Edge {
-        std::uint32_t src;
-        std::uint32_t label; // hom or attr index
-        bool is_attr;
-        std::uint32_t tgt;
+    // A resolved term: a node of the shape, or a literal (which has no node of its own).
+    struct Resolved {
+        std::optional<Handle> handle;
+        Value literal;
     };
 
-    std::uint32_t new_elem(Elem e);
-    std::optional<std::uint32_t> resolve(const Term& t, SourceRange where);
-    std::uint32_t follow(std::uint32_t from, std::uint32_t label, bool is_attr, Elem proto);
-    bool merge(std::uint32_t a, std::uint32_t b, SourceRange where);
-    void close(SourceRange where);
+    std::optional<Resolved> resolve(const Term& t, SourceRange where);
+    colimit::Node follow(colimit::Node from, Origin origin);
+    void take_problems();
+    QueryElement locate(const Handle& h) const;
     void build() const;
 
     SchemaPtr source_;
     std::vector<QueryNode> nodes_;
-    std::vector<std::uint32_t> node_elems_;
-    std::vector<Elem> elems_;
-    std::vector<Edge> edges_;
-    std::vector<std::optional<Value>> literal_; // by elem (meaningful at roots)
-    mutable UnionFind uf_;
+    std::vector<Handle> node_handles_; // per variable
+    std::vector<Handle> handles_;      // per add_term
+    colimit::Presentation shape_;
+    std::vector<Origin> part_origin_, value_origin_; // per node of the presentation
+    std::size_t problems_taken_ = 0; // the presentation's problems already in problems_
     std::vector<QueryProblem> problems_;
     std::size_t num_equations_ = 0;
     bool empty_ = false;
 
     // Built shape.
-    mutable bool built_ = false;
-    mutable std::optional<ACSet> state_;
-    mutable std::vector<std::uint32_t> elem_slot_;          // by root elem: part or var index
-    mutable std::vector<std::vector<std::uint32_t>> reps_;  // per ob: elem of each part
-    mutable std::vector<std::vector<std::uint32_t>> vreps_; // per type: elem of each var
+    mutable std::optional<colimit::Presentation::Instance> built_;
+    mutable std::vector<std::vector<colimit::Node>> reps_;  // per ob: the node of each part
+    mutable std::vector<std::vector<colimit::Node>> vreps_; // per type: the node of each var
 };
+
+/// The part reached from p along a path of x's homs, or kNoPart once a hom on the way is unset.
+Part follow(const ACSet& x, Part p, const std::vector<HomId>& homs);
 
 } // namespace catplan::migrate

@@ -2,6 +2,7 @@
 
 #include "catplan/base/hash.hpp"
 #include "catplan/hom/hom_search.hpp"
+#include "catplan/plan/entities.hpp"
 
 #include <algorithm>
 #include <functional>
@@ -14,6 +15,18 @@
 namespace catplan::plan {
 
 std::optional<HeuristicKind> parse_heuristic(std::string_view name) {
+    if (name == "default") {
+        return HeuristicKind::Default;
+    }
+    if (name == "hmax") {
+        return HeuristicKind::HMax;
+    }
+    if (name == "lmcut") {
+        return HeuristicKind::LmCut;
+    }
+    if (name == "lmcount") {
+        return HeuristicKind::LmCount;
+    }
     if (name == "blind") {
         return HeuristicKind::Blind;
     }
@@ -31,6 +44,14 @@ std::optional<HeuristicKind> parse_heuristic(std::string_view name) {
 
 std::string_view to_string(HeuristicKind kind) {
     switch (kind) {
+    case HeuristicKind::Default:
+        return "default";
+    case HeuristicKind::HMax:
+        return "hmax";
+    case HeuristicKind::LmCut:
+        return "lmcut";
+    case HeuristicKind::LmCount:
+        return "lmcount";
     case HeuristicKind::Blind:
         return "blind";
     case HeuristicKind::GoalCount:
@@ -88,7 +109,8 @@ std::uint64_t key_of(std::uint32_t type, std::uint64_t mask, const std::vector<P
 // The fact abstraction of a problem and its ground relaxed actions (heuristic.hpp).
 class RelaxedTask {
 public:
-    explicit RelaxedTask(const Problem& problem) : schema_(problem.initial->schema_ptr()) {
+    RelaxedTask(const Problem& problem, Budget* budget)
+        : schema_(problem.initial->schema_ptr()), budget_(budget) {
         classify(problem);
         // Templates of every rule, and the goal's facts; their masks are the projections in use.
         for (const auto& rule : problem.domain->rules) {
@@ -146,6 +168,13 @@ public:
 
     std::size_t num_props() const { return num_props_; }
 
+    // Lets a long evaluation stop at a limit (throws LimitReached).
+    void poll() const {
+        if (budget_ != nullptr) {
+            budget_->poll();
+        }
+    }
+
     // The goal's props, one list per identification of its entities; h is the least over them.
     const std::vector<std::vector<std::uint32_t>>& goals() const { return goals_; }
 
@@ -184,128 +213,24 @@ private:
         return static_cast<std::uint32_t>(s.num_obs() + s.num_homs() + s.num_attrs());
     }
 
-    // Decides which parts are entities (heuristic.hpp): whole objects no rule creates, deletes or
-    // merges, then, in objects some rule does, the initial parts no rule can ever delete.
+    // Decides which parts are entities (entities.hpp); those of objects that are not entity
+    // objects are followed by name.
     void classify(const Problem& problem) {
         const auto& s = *schema_;
         const ACSet& init = *problem.initial;
-        const auto& rules = problem.domain->rules;
-        entity_.assign(s.num_obs(), true);
-        for (const auto& rule : rules) {
-            for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
-                ObId ob(o);
-                std::size_t nk = rule->K.num_parts(ob);
-                if (rule->L.num_parts(ob) != nk || rule->R.num_parts(ob) != nk ||
-                    !r_injective(*rule, ob)) {
-                    entity_[o] = false;
-                }
-            }
-        }
-        entity_parts_.assign(s.num_obs(), {});
+        auto e = find_entities(*problem.domain, init);
+        entity_ = e.whole;
+        entity_parts_ = std::move(e.parts);
         by_name_.assign(s.num_obs(), {});
         has_entities_.assign(s.num_obs(), false);
-        auto gained = gainable_homs(rules);
         for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
-            ObId ob(o);
-            if (entity_[o]) {
-                has_entities_[o] = true;
-                for (Part p = 0; p < init.num_parts(ob); ++p) {
-                    entity_parts_[o].push_back(p);
-                }
-                continue;
-            }
-            if (!std::all_of(rules.begin(), rules.end(),
-                             [&](const RulePtr& r) { return r_injective(*r, ob); })) {
-                continue; // a rule merges parts of ob: identities are not stable
-            }
-            for (Part p = 0; p < init.num_parts(ob); ++p) {
-                auto name = init.part_name(ob, p);
-                if (name.empty() || init.find_part(ob, name) != p ||
-                    deletable(rules, gained, init, ob, p)) {
-                    continue;
-                }
-                entity_parts_[o].push_back(p);
-                by_name_[o].emplace(std::string(name), p);
-            }
-            has_entities_[o] = !entity_parts_[o].empty();
-        }
-    }
-
-    static bool r_injective(const Rule& rule, ObId ob) {
-        std::vector<bool> hit(rule.R.num_parts(ob), false);
-        for (Part k = 0; k < rule.K.num_parts(ob); ++k) {
-            Part q = rule.r(ob, k);
-            if (hit[q]) {
-                return false;
-            }
-            hit[q] = true;
-        }
-        return true;
-    }
-
-    // Per hom: whether some rule makes it point into a kept part where it did not before (R sets
-    // it on a created part, or on a kept part whose K value is another or unset). A hom that no
-    // rule gains keeps every kept part's preimage under it from growing.
-    std::vector<bool> gainable_homs(const std::vector<RulePtr>& rules) const {
-        const auto& s = *schema_;
-        std::vector<bool> gained(s.num_homs(), false);
-        for (const auto& rule : rules) {
-            for (std::uint32_t h = 0; h < s.num_homs(); ++h) {
-                HomId f(h);
-                ObId dom = s.hom(f).dom, cod = s.hom(f).codom;
-                std::vector<Part> k_of_r(rule->R.num_parts(dom), kNoPart);
-                for (Part k = 0; k < rule->K.num_parts(dom); ++k) {
-                    k_of_r[rule->r(dom, k)] = k;
-                }
-                std::vector<bool> kept_target(rule->R.num_parts(cod), false);
-                for (Part k = 0; k < rule->K.num_parts(cod); ++k) {
-                    kept_target[rule->r(cod, k)] = true;
-                }
-                for (Part q = 0; q < rule->R.num_parts(dom); ++q) {
-                    Part t = rule->R.subpart(f, q);
-                    if (t == kNoPart || !kept_target[t]) {
-                        continue;
-                    }
-                    Part k = k_of_r[q];
-                    Part before = k == kNoPart ? kNoPart : rule->K.subpart(f, k);
-                    if (before == kNoPart || rule->r(cod, before) != t) {
-                        gained[h] = true;
-                    }
+            has_entities_[o] = entity_[o] || !entity_parts_[o].empty();
+            if (!entity_[o]) {
+                for (Part p : entity_parts_[o]) {
+                    by_name_[o].emplace(std::string(init.part_name(ObId(o), p)), p);
                 }
             }
         }
-        return gained;
-    }
-
-    // Whether some rule's deleted L part of ob might match initial part p in a reachable state.
-    // A deleted L part that some hom no rule gains points into can only match a part that has
-    // such a preimage already (a monic match maps L's preimage into X's); p without one is safe
-    // from it forever, since kept parts never gain preimages under that hom.
-    bool deletable(const std::vector<RulePtr>& rules, const std::vector<bool>& gained,
-                   const ACSet& init, ObId ob, Part p) const {
-        const auto& s = *schema_;
-        for (const auto& rule : rules) {
-            std::vector<bool> kept(rule->L.num_parts(ob), false);
-            for (Part k = 0; k < rule->K.num_parts(ob); ++k) {
-                kept[rule->l(ob, k)] = true;
-            }
-            for (Part d = 0; d < rule->L.num_parts(ob); ++d) {
-                if (kept[d]) {
-                    continue;
-                }
-                bool excluded = false;
-                for (HomId f : s.homs_into(ob)) {
-                    if (!gained[f.index()] && !rule->L.incident(f, d).empty() &&
-                        init.incident(f, p).empty()) {
-                        excluded = true;
-                    }
-                }
-                if (!excluded) {
-                    return true;
-                }
-            }
-        }
-        return false;
     }
 
     // The entity a part of state x stands for (its initial part id), or nullopt for a fact part.
@@ -553,6 +478,9 @@ private:
             };
             std::vector<Part> a(t.slot_obs.size(), kNoPart);
             std::function<void(std::size_t)> assign = [&](std::size_t i) {
+                if (budget_ != nullptr) {
+                    budget_->poll();
+                }
                 if (i == a.size()) {
                     pending.push_back({ri, a});
                     return;
@@ -577,6 +505,9 @@ private:
             }
         }
         for (const auto& pa : pending) {
+            if (budget_ != nullptr) {
+                budget_->poll();
+            }
             Action act;
             for (const auto& f : templates_[pa.rule].pre) {
                 if (dynamic_[f.type]) {
@@ -615,6 +546,7 @@ private:
     }
 
     schema::SchemaPtr schema_;
+    Budget* budget_;
     std::vector<bool> entity_;       // per ob: every part is an entity (none created or deleted)
     std::vector<bool> has_entities_; // per ob: some initial part is an entity
     std::vector<std::vector<Part>> entity_parts_; // per ob: the initial entities, sorted
@@ -637,7 +569,7 @@ public:
 
 class GoalCount final : public Heuristic {
 public:
-    explicit GoalCount(const Problem& p) : task_(p) {}
+    GoalCount(const Problem& p, Budget* budget) : task_(p, budget) {}
 
     int evaluate(const ACSet& x) override {
         task_.props_of(x, truth_);
@@ -660,7 +592,9 @@ private:
 // h_add by a generalised Dijkstra over props; h_FF marks the best supporters' relaxed plan.
 class Additive final : public Heuristic {
 public:
-    Additive(const Problem& p, bool ff) : task_(p), ff_(ff) {}
+    enum class Mode { Add, Max, FF };
+
+    Additive(const Problem& p, Mode mode, Budget* budget) : task_(p, budget), mode_(mode) {}
 
     int evaluate(const ACSet& x) override {
         constexpr int kInf = std::numeric_limits<int>::max();
@@ -684,7 +618,7 @@ public:
             }
         }
         auto fire = [&](std::uint32_t a) {
-            int c = 1 + sum_[a];
+            int c = 1 + sum_[a]; // sum_ holds the largest precondition cost for h_max
             for (std::uint32_t q : actions[a].add) {
                 if (c < cost_[q]) {
                     cost_[q] = c;
@@ -700,6 +634,7 @@ public:
             }
         }
         while (!queue.empty()) {
+            task_.poll();
             std::pop_heap(queue.begin(), queue.end(), std::greater<>());
             auto [c, p] = queue.back();
             queue.pop_back();
@@ -707,7 +642,8 @@ public:
                 continue;
             }
             for (std::uint32_t a : task_.pre_of()[p]) {
-                sum_[a] = std::min(sum_[a] + c, kDeadEnd);
+                sum_[a] =
+                    mode_ == Mode::Max ? std::max(sum_[a], c) : std::min(sum_[a] + c, kDeadEnd);
                 if (--unsat_[a] == 0) {
                     fire(a);
                 }
@@ -715,7 +651,8 @@ public:
         }
         int best = kDeadEnd;
         for (const auto& goal : task_.goals()) {
-            best = std::min(best, ff_ ? relaxed_plan_size(goal) : additive_cost(goal));
+            best =
+                std::min(best, mode_ == Mode::FF ? relaxed_plan_size(goal) : additive_cost(goal));
         }
         return best;
     }
@@ -728,7 +665,7 @@ private:
             if (cost_[g] == kInf) {
                 return kDeadEnd;
             }
-            total += cost_[g];
+            total = mode_ == Mode::Max ? std::max<long>(total, cost_[g]) : total + cost_[g];
         }
         return static_cast<int>(std::min<long>(total, kDeadEnd - 1));
     }
@@ -764,7 +701,7 @@ private:
     }
 
     RelaxedTask task_;
-    bool ff_;
+    Mode mode_;
     std::vector<char> truth_;
     std::vector<int> cost_, sum_;
     std::vector<std::uint32_t> supporter_, unsat_;
@@ -774,16 +711,22 @@ private:
 
 } // namespace
 
-std::unique_ptr<Heuristic> make_heuristic(HeuristicKind kind, const Problem& problem) {
+std::unique_ptr<Heuristic> make_heuristic(HeuristicKind kind, const Problem& problem,
+                                          Budget* budget) {
     switch (kind) {
     case HeuristicKind::Blind:
         return std::make_unique<Blind>();
     case HeuristicKind::GoalCount:
-        return std::make_unique<GoalCount>(problem);
+        return std::make_unique<GoalCount>(problem, budget);
     case HeuristicKind::HAdd:
-        return std::make_unique<Additive>(problem, false);
+        return std::make_unique<Additive>(problem, Additive::Mode::Add, budget);
+    case HeuristicKind::HMax:
+    case HeuristicKind::LmCut:
+        return std::make_unique<Additive>(problem, Additive::Mode::Max, budget);
+    case HeuristicKind::Default:
     case HeuristicKind::HFF:
-        return std::make_unique<Additive>(problem, true);
+    case HeuristicKind::LmCount:
+        return std::make_unique<Additive>(problem, Additive::Mode::FF, budget);
     }
     CATPLAN_UNREACHABLE("heuristic kind");
 }

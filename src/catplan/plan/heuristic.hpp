@@ -2,14 +2,9 @@
 // Heuristics for the planner: estimates of the number of steps from a state to the goal.
 //
 // The abstraction (computed once per problem from the rules' L and R and the goal):
-//   - Entities are decided per part. An *entity object* is one no rule creates, deletes or merges
-//     (every part of it in L and R comes from K, injectively): Block in the STRIPS blocks world;
-//     its parts keep their ids in every reachable state. In another object (Block in the paper's
-//     domain, where a marker block is deleted and recreated), an initial part is an entity when
-//     it is uniquely named and no rule can ever delete it: every deleted L part of its object has
-//     a preimage under some hom that no rule makes point into a kept part, and the initial part
-//     has none (so it never will). Such entities are followed by name, since pop-and-swap
-//     deletions move ids. A rule's slots are its kept L parts of objects with entities.
+//   - Entities are decided per part (entities.hpp): the parts of entity objects, which keep
+//     their ids, and the initial parts of other objects that no rule can delete, followed by
+//     name. A rule's slots are its kept L parts of objects with entities.
 //   - A *fact* is any other part (a predicate object's: On, IsClear, Empty; the marker block)
 //     seen as its tuple of hom values into entities and concrete attribute values; or a hom value
 //     between two entities; or a concrete attribute value of an entity. Hom values into non-entity
@@ -27,13 +22,17 @@
 //   blind      0 everywhere (A* becomes uniform-cost search).
 //   goalcount  the number of goal facts absent from the state.
 //   hadd       h_add: the sum over goal facts of their relaxed costs (Bonet & Geffner).
+//   hmax       h_max: the largest relaxed cost of a goal fact.
 //   hff        h_FF: the size of the relaxed plan extracted from h_add's best supporters
 //   (Hoffmann).
+// (lmcut and lmcount exist on ground tasks only, ground/heuristics.hpp; make_heuristic gives hmax
+// and hff for them.)
 // None is admissible in general (goalcount is when each step adds at most one goal fact); a state
 // whose goal facts are unreachable in the relaxation gets kDeadEnd, which the search does not
 // prune (the abstraction can be wrong where wildcards hide information) but expands last.
 
 #include "catplan/plan/domain.hpp"
+#include "catplan/plan/limits.hpp"
 
 #include <memory>
 #include <optional>
@@ -41,9 +40,19 @@
 
 namespace catplan::plan {
 
-enum class HeuristicKind { Blind, GoalCount, HAdd, HFF };
+enum class HeuristicKind {
+    Default, // the search's own: hff for greedy searches, lmcut for A*, blind for BFS
+    Blind,
+    GoalCount,
+    HAdd,
+    HMax,
+    HFF,
+    LmCut,   // grounded search only (the C-set search uses hmax)
+    LmCount, // grounded search only (the C-set search uses hff)
+};
 
-/// "blind", "goalcount", "hadd" or "hff"; nullopt for another name.
+/// "default", "blind", "goalcount", "hadd", "hmax", "hff", "lmcut" or "lmcount"; nullopt for
+/// another name.
 std::optional<HeuristicKind> parse_heuristic(std::string_view name);
 /// The name parse_heuristic reads.
 std::string_view to_string(HeuristicKind kind);
@@ -58,7 +67,10 @@ public:
     virtual int evaluate(const ACSet& x) = 0;
 };
 
-/// A heuristic of this kind for the problem (its domain's rules, initial state and goal).
-std::unique_ptr<Heuristic> make_heuristic(HeuristicKind kind, const Problem& problem);
+/// A heuristic of this kind for the problem (its domain's rules, initial state and goal; Default
+/// is hff); its
+/// set-up polls budget when given (and may throw LimitReached, limits.hpp).
+std::unique_ptr<Heuristic> make_heuristic(HeuristicKind kind, const Problem& problem,
+                                          Budget* budget = nullptr);
 
 } // namespace catplan::plan

@@ -67,20 +67,26 @@ TEST(Search, EveryConfigurationFindsAValidPlan) {
 TEST(Search, DuplicatesAreDetectedUpToIsomorphism) {
     // The goal needs a fourth block, so the search expands every reachable state: 13 ways to
     // stack three labelled blocks with the hand empty, and 3 x 3 holding one; without labels,
-    // only the shapes count: 3 + 2.
-    for (bool labelled : {true, false}) {
-        auto d = blocks_domain(labelled);
-        auto p = std::make_shared<Problem>();
-        p->domain = d;
-        p->initial = std::make_shared<ACSet>(blocks_state(d->schema, kABC, {{0}, {1}, {2}}));
-        p->goal = std::make_shared<ACSet>(blocks_goal(d->schema, {"A", "B", "C", "D"}, {}));
-        auto r = find_plan(*p);
-        EXPECT_EQ(r.status, SearchStatus::Unsolvable);
-        EXPECT_FALSE(r.plan);
-        std::uint64_t expected = labelled ? 22 : 5;
-        EXPECT_EQ(r.stats.expanded, expected);
-        EXPECT_EQ(r.stats.states, expected);
-        EXPECT_EQ(r.stats.generated - r.stats.duplicates + 1, expected);
+    // only the shapes count: 3 + 2 for the C-set search, which merges isomorphic states, and 22
+    // for the grounded search, which compares states exactly.
+    for (bool ground : {false, true}) {
+        for (bool labelled : {true, false}) {
+            auto d = blocks_domain(labelled);
+            auto p = std::make_shared<Problem>();
+            p->domain = d;
+            p->initial = std::make_shared<ACSet>(blocks_state(d->schema, kABC, {{0}, {1}, {2}}));
+            p->goal = std::make_shared<ACSet>(blocks_goal(d->schema, {"A", "B", "C", "D"}, {}));
+            SearchOptions opt;
+            opt.ground = ground;
+            auto r = find_plan(*p, opt);
+            EXPECT_EQ(r.path, ground ? "grounded" : "C-set");
+            EXPECT_EQ(r.status, SearchStatus::Unsolvable);
+            EXPECT_FALSE(r.plan);
+            std::uint64_t expected = labelled || ground ? 22 : 5;
+            EXPECT_EQ(r.stats.expanded, expected);
+            EXPECT_EQ(r.stats.states, expected);
+            EXPECT_EQ(r.stats.generated - r.stats.duplicates + 1, expected);
+        }
     }
 }
 

@@ -11,6 +11,7 @@
 #include "catplan/acset/acset.hpp"
 
 #include <cstdint>
+#include <deque>
 #include <unordered_map>
 #include <vector>
 
@@ -45,7 +46,7 @@ public:
     std::uint64_t iso_tests() const { return iso_tests_; }
 
 private:
-    std::vector<ACSet> states_;
+    std::deque<ACSet> states_; // grows in blocks, never by doubling one large array
     std::unordered_map<std::uint64_t, std::vector<StateId>> by_hash_;
     std::size_t bytes_ = 0;
     std::uint64_t iso_tests_ = 0;

@@ -5,6 +5,7 @@
 #include "catplan/report/svg.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <fmt/format.h>
 #include <set>
 #include <vector>
@@ -26,6 +27,7 @@ h2 { font-size: 1.25em; border-bottom: 1px solid #ccc; padding-bottom: 0.2em; ma
 .verdict { font-size: 1.3em; font-weight: bold; padding: 0.5em 0.8em; border-radius: 6px; }
 .valid { background: #e3f4e1; color: #1d5e1a; border: 1px solid #9ccf97; }
 .invalid { background: #fbe3e3; color: #8a1f1f; border: 1px solid #e0a0a0; }
+.diverged { background: #fdf3d8; color: #6b4b00; border: 1px solid #e3c77a; }
 .muted { color: #666; }
 .bar { background: #eee; border-radius: 4px; height: 14px; width: 320px; display: inline-block;
        vertical-align: middle; overflow: hidden; }
@@ -104,14 +106,24 @@ std::string header_section(const ReportInput& in) {
                      escape_html(in.map_name), escape_html(f.target()->name()),
                      escape_html(f.source()->name()), transfer::to_string(t.migration),
                      escape_html(in.problem->domain->name), in.plan->steps.size());
-    o += fmt::format("<p class=\"verdict {}\">{}</p>\n", v.valid() ? "valid" : "invalid",
-                     v.valid() ? "Valid: every step applies and the goal embeds monically"
-                               : "Invalid: " + escape_html(v.reason()));
+    // A valid transfer whose trajectory diverges is shown as a caveat, not as plainly valid.
+    const char* tone = !v.valid() ? "invalid" : (v.diverged() ? "diverged" : "valid");
+    std::string summary = v.summary();
+    summary[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(summary[0])));
+    o += fmt::format("<p class=\"verdict {}\">{}</p>\n", tone, escape_html(summary));
     if (const auto* source = v.find(Fault::Kind::SourcePlan)) {
         o += fmt::format("<p class=\"failed\">The source plan itself is invalid: {}</p>\n",
                          escape_html(source->to_string()));
     }
-    if (v.claim(transfer::Claim::Kind::ValidByConstruction).holds()) {
+    for (const auto& d : v.divergences) {
+        o += fmt::format("<p class=\"failed\">Diverged: {}</p>\n", escape_html(d.to_string()));
+    }
+    const auto& claim = v.claim(transfer::Claim::Kind::ValidByConstruction);
+    if (const auto* no = claim.failing()) {
+        o += fmt::format("<p class=\"muted\">Not valid by construction: paper Appendix A assumes "
+                         "{}, but {}. Every step was checked.</p>\n",
+                         escape_html(no->statement), escape_html(no->why_not));
+    } else {
         o += "<p class=\"muted\">A delta migration preserves pushouts: the transferred plan is "
              "valid by construction (paper, Appendix A); it was checked anyway.</p>\n";
     }
@@ -339,7 +351,7 @@ std::string efficiency_section(const ReportInput& in) {
             fmt::format("{:.3f} ms (migrate {:.3f}, replay and apply {:.3f}, validate {:.3f})",
                         tm.total_ms, tm.migrate_ms, tm.apply_ms, tm.validate_ms));
         row("replanning time", fmt::format("{:.3f} ms", rp.ms));
-        row("replanning / transfer", fmt::format("{:.0f}x", rp.ms / std::max(tm.total_ms, 1e-6)));
+        row("replanning / transfer", transfer::speedup_text(rp, tm.total_ms));
         row("peak memory after transfer",
             fmt::format("{:.1f} MB", static_cast<double>(in.transfer_peak_kib) / 1024.0));
         row("peak memory after replanning",

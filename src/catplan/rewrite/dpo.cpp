@@ -1,54 +1,29 @@
+// Matching (dpo.hpp) and what both applications of a rule share (detail/shape.hpp).
+
 #include "catplan/rewrite/dpo.hpp"
 
 #include "catplan/hom/hom_search.hpp"
-#include "catplan/rewrite/detail/relations.hpp"
+#include "catplan/rewrite/detail/shape.hpp"
 
 #include <algorithm>
 #include <fmt/format.h>
-#include <unordered_map>
 
 namespace catplan::rewrite {
 
-namespace {
-
-// TODO(#3): merge the kept parts that r sends to one R part (a true pushout).
-constexpr const char* kGluingKeptParts =
-    "rules whose Eff glues two kept parts into one are not supported";
-
-// Facts about a rule that matching and application need, computed once per call (rules are
-// small, so this is cheap next to the search).
-struct Shape {
-    explicit Shape(const Rule& rule);
-
-    const Rule& rule;
-    std::vector<std::vector<Part>> k_of_l; // per ob, per L part: the K part kept as it, or kNoPart
-    std::vector<std::vector<Part>> k_of_r; // per ob, per R part: the first K part sent to it
-    std::vector<std::uint32_t> unset_in_l; // per hom: L parts whose value is unset
-    std::vector<std::vector<std::uint32_t>> l_incident; // per hom, per L part: |L.incident(h, p)|
-    bool r_monic = true;
-    /// Whether, for a monic match, the pruning in find_matches already implies the dangling
-    /// condition: no hom of L is unset on any part (the pruning allows those), so the only X parts
-    /// referring to a deleted part are images of L parts, which a well-formed l deletes too or
-    /// keeps with a hom that L and K agree on.
-    bool dangling_by_counts = true;
-
-    bool deleted(ObId o, Part p) const { return k_of_l[o.index()][p] == kNoPart; }
-
-    /// Whether kept K part k has hom h redirected by the rule (unset in K, set in R).
-    bool redirects(HomId h, Part k) const {
-        return rule.K.subpart(h, k) == kNoPart &&
-               rule.R.subpart(h, rule.r(rule.K.schema().hom(h).dom, k)) != kNoPart;
-    }
-};
+namespace detail {
 
 Shape::Shape(const Rule& r) : rule(r) {
     const auto& s = r.L.schema();
+    gluing.cascade = r.semantics == Semantics::SPO;
+    gluing.open.homs.resize(s.num_homs());
     for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
         ObId ob(o);
-        k_of_l.emplace_back(r.L.num_parts(ob), kNoPart);
+        deletes.emplace_back(r.L.num_parts(ob), 0);
+        for (Part p : r.deleted_parts(ob)) {
+            deletes[o][p] = 1;
+        }
         k_of_r.emplace_back(r.R.num_parts(ob), kNoPart);
         for (Part k = 0; k < r.K.num_parts(ob); ++k) {
-            k_of_l[o][r.l(ob, k)] = k;
             Part rp = r.r(ob, k);
             if (k_of_r[o][rp] != kNoPart) {
                 r_monic = false;
@@ -75,149 +50,30 @@ Shape::Shape(const Rule& r) : rule(r) {
             dangling_by_counts = false;
         }
         for (Part k = 0; k < r.K.num_parts(dom); ++k) {
-            if (r.K.subpart(f, k) == kNoPart && r.L.subpart(f, r.l(dom, k)) != kNoPart) {
+            if (r.K.subpart(f, k) != kNoPart) {
+                continue;
+            }
+            if (r.L.subpart(f, r.l(dom, k)) != kNoPart) {
                 dangling_by_counts = false; // a kept part's hom K leaves unset: check it fully
+            }
+            if (r.R.subpart(f, r.r(dom, k)) != kNoPart) {
+                gluing.open.homs[h].push_back(k); // redirected by the rule
             }
         }
         l_incident.push_back(std::move(counts));
     }
 }
 
-// The X parts a match deletes, per object, sorted; small, so lookups are binary searches.
-std::vector<std::vector<Part>> deleted_parts(const Shape& shape, const ACSetMorphism& m) {
-    const auto& s = shape.rule.L.schema();
-    std::vector<std::vector<Part>> out(s.num_obs());
+bool is_injective(const ACSetMorphism& m, const ACSet& dom) {
+    const auto& s = dom.schema();
     for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
-        for (Part p = 0; p < shape.k_of_l[o].size(); ++p) {
-            if (shape.k_of_l[o][p] == kNoPart) {
-                out[o].push_back(m(ObId(o), p));
-            }
-        }
-        std::sort(out[o].begin(), out[o].end());
-        out[o].erase(std::unique(out[o].begin(), out[o].end()), out[o].end());
-    }
-    return out;
-}
-
-bool contains(const std::vector<Part>& sorted, Part p) {
-    return std::binary_search(sorted.begin(), sorted.end(), p);
-}
-
-// SPO: the parts a match deletes, closed under "refers to a deleted part" (reference §4.5);
-// fails with a reason when the closure reaches the image of a kept part whose reference the rule
-// does not redirect. Costs O(size of X) for the marks, which SPO rules alone pay.
-Result<std::vector<std::vector<Part>>> cascade(const Shape& shape, const ACSet& x,
-                                               const ACSetMorphism& m) {
-    const auto& rule = shape.rule;
-    const auto& s = x.schema();
-    auto deleted = deleted_parts(shape, m);
-    std::vector<std::vector<char>> mark(s.num_obs());
-    std::vector<std::vector<Part>> kept_at(s.num_obs()); // per ob, per X part: K part or kNoPart
-    std::vector<std::pair<ObId, Part>> work;
-    for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
-        ObId ob(o);
-        mark[o].assign(x.num_parts(ob), 0);
-        kept_at[o].assign(x.num_parts(ob), kNoPart);
-        for (Part k = 0; k < rule.K.num_parts(ob); ++k) {
-            kept_at[o][m(ob, rule.l(ob, k))] = k;
-        }
-        for (Part y : deleted[o]) {
-            mark[o][y] = 1;
-            work.emplace_back(ob, y);
+        std::vector<Part> images = m.components[o];
+        std::sort(images.begin(), images.end());
+        if (std::adjacent_find(images.begin(), images.end()) != images.end()) {
+            return false;
         }
     }
-    while (!work.empty()) {
-        auto [ob, y] = work.back();
-        work.pop_back();
-        for (HomId f : s.homs_into(ob)) {
-            ObId dom = s.hom(f).dom;
-            for (Part q : x.incident(f, y)) {
-                if (mark[dom.index()][q]) {
-                    continue;
-                }
-                Part k = kept_at[dom.index()][q];
-                if (k != kNoPart) {
-                    if (shape.redirects(f, k)) {
-                        continue;
-                    }
-                    return fail(fmt::format("SPO: deleting {} {} would delete {} {}, which the "
-                                            "rule keeps",
-                                            s.ob(ob).name, x.part_label(ob, y), s.ob(dom).name,
-                                            x.part_label(dom, q)));
-                }
-                mark[dom.index()][q] = 1;
-                deleted[dom.index()].push_back(q);
-                work.emplace_back(dom, q);
-            }
-        }
-    }
-    for (auto& d : deleted) {
-        std::sort(d.begin(), d.end());
-    }
-    return deleted;
-}
-
-// The parts applying the rule at m deletes, per object, sorted (the cascade under SPO).
-Result<std::vector<std::vector<Part>>> parts_to_delete(const Shape& shape, const ACSet& x,
-                                                       const ACSetMorphism& m) {
-    if (shape.rule.semantics == Semantics::SPO) {
-        return cascade(shape, x, m);
-    }
-    return deleted_parts(shape, m);
-}
-
-std::optional<std::string> identification_problem(const Shape& shape, const ACSet& x,
-                                                  const ACSetMorphism& m) {
-    const auto& rule = shape.rule;
-    const auto& s = rule.L.schema();
-    for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
-        ObId ob(o);
-        std::unordered_map<Part, Part> first;
-        for (Part p = 0; p < rule.L.num_parts(ob); ++p) {
-            auto [it, fresh] = first.emplace(m(ob, p), p);
-            if (!fresh && (shape.deleted(ob, p) || shape.deleted(ob, it->second))) {
-                return fmt::format("identification: the match sends {} and {} of {} to the same "
-                                   "part {}, and the rule deletes one of them",
-                                   rule.L.part_label(ob, it->second), rule.L.part_label(ob, p),
-                                   s.ob(ob).name, x.part_label(ob, m(ob, p)));
-            }
-        }
-    }
-    return std::nullopt;
-}
-
-std::optional<std::string> dangling_problem(const Shape& shape, const ACSet& x,
-                                            const ACSetMorphism& m) {
-    const auto& rule = shape.rule;
-    const auto& s = rule.L.schema();
-    auto deleted = deleted_parts(shape, m);
-    // The kept L part matched to each X part that the rule keeps (for the redirect exemption).
-    std::vector<std::unordered_map<Part, Part>> kept_at(s.num_obs());
-    for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
-        for (Part k = 0; k < rule.K.num_parts(ObId(o)); ++k) {
-            kept_at[o].emplace(m(ObId(o), rule.l(ObId(o), k)), k);
-        }
-    }
-    for (std::uint32_t h = 0; h < s.num_homs(); ++h) {
-        HomId f(h);
-        ObId dom = s.hom(f).dom, codom = s.hom(f).codom;
-        for (Part y : deleted[codom.index()]) {
-            for (Part q : x.incident(f, y)) {
-                if (contains(deleted[dom.index()], q)) {
-                    continue;
-                }
-                auto it = kept_at[dom.index()].find(q);
-                if (it != kept_at[dom.index()].end() && shape.redirects(f, it->second)) {
-                    continue;
-                }
-                return fmt::format("dangling: {} {} refers through {} to {} {}, which the rule "
-                                   "deletes",
-                                   s.ob(dom).name, x.part_label(dom, q), s.hom(f).name,
-                                   s.ob(codom).name, x.part_label(codom, y));
-            }
-        }
-    }
-    return std::nullopt;
+    return true;
 }
 
 std::optional<std::string> condition_problem(const Rule& rule, const ACSet& x,
@@ -252,285 +108,185 @@ std::optional<std::string> condition_problem(const Rule& rule, const ACSet& x,
     return std::nullopt;
 }
 
-// Everything but naturality and monicity: gluing conditions, then application conditions.
 std::optional<std::string> validity_problem(const Shape& shape, const ACSet& x,
                                             const ACSetMorphism& m) {
-    if (auto p = identification_problem(shape, x, m)) {
-        return p;
-    }
-    if (shape.rule.semantics == Semantics::SPO) {
-        if (auto d = cascade(shape, x, m); !d) {
-            return d.error();
-        }
-    } else if (auto p = dangling_problem(shape, x, m)) {
-        return p;
-    }
-    return condition_problem(shape.rule, x, m);
-}
-
-bool is_injective(const ACSetMorphism& m, const ACSet& x) {
-    const auto& s = x.schema();
-    for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
-        std::vector<Part> images = m.components[o];
-        std::sort(images.begin(), images.end());
-        if (std::adjacent_find(images.begin(), images.end()) != images.end()) {
-            return false;
-        }
-    }
-    return true;
-}
-
-// The value an attribute cell of R gives the result: R's constant, the matched value flowing
-// through K, or an expression of matched values; nullopt for "a fresh unknown".
-class RValues {
-public:
-    RValues(const Rule& rule, const ACSetMorphism& m) : rule_(rule), m_(m) {
-        const auto& s = rule.R.schema();
-        through_k_.resize(s.num_attr_types());
-        for (std::uint32_t t = 0; t < s.num_attr_types(); ++t) {
-            AttrTypeId ty(t);
-            through_k_[t].assign(rule.R.num_vars(ty), Value());
-            for (std::uint32_t k = 0; k < rule.K.num_vars(ty); ++k) {
-                const Value& rv = rule.r.var(ty, k);
-                if (rv.is_var()) {
-                    through_k_[t][rv.var_index()] = matched(ty, rule.l.var(ty, k));
-                }
-            }
-        }
-    }
-
-    // The X value the match gives an L value.
-    Value matched(AttrTypeId ty, const Value& l_value) const {
-        return l_value.is_var() ? m_.var(ty, l_value.var_index()) : l_value;
-    }
-
-    // The value of R variable j, or unset for "a fresh unknown"; fails if an expression fails.
-    Result<Value> var_value(AttrTypeId ty, std::uint32_t j) const {
-        const Value& v = through_k_[ty.index()][j];
-        if (!v.is_unset()) {
-            return v;
-        }
-        const auto& exprs = rule_.exprs;
-        if (ty.index() < exprs.size() && j < exprs[ty.index()].size() &&
-            exprs[ty.index()][j].has_value()) {
-            return evaluate(*exprs[ty.index()][j],
-                            [&](AttrTypeId t, std::uint32_t var) { return m_.var(t, var); });
-        }
-        return Value();
-    }
-
-private:
-    const Rule& rule_;
-    const ACSetMorphism& m_;
-    std::vector<std::vector<Value>> through_k_;
-};
-
-struct InPlaceOutcome {
-    ACSetMorphism r_to_x;
-    std::vector<std::vector<Part>> origin; // per ob, per result part: its X id, or kNoPart if new
-};
-
-// The in-place application proper; the match has been checked and r is monic.
-Result<InPlaceOutcome> apply_in_place(const Shape& shape, ACSet& x, const ACSetMorphism& m,
-                                      bool track_origin) {
     const Rule& rule = shape.rule;
-    const auto& s = x.schema();
-    RValues values(rule, m);
-    // Resolve R's variables before touching x, so a failing expression leaves x unchanged.
-    std::vector<std::vector<Value>> r_var(s.num_attr_types());
+    auto violations = colimit::gluing_violations(rule.K, rule.L, x, rule.l, m, shape.gluing);
+    if (!violations.empty()) {
+        return violations.front().reason;
+    }
+    return condition_problem(rule, x, m);
+}
+
+namespace {
+
+// Per attribute type, per variable of R: the value the match gives it, or unset (a fresh unknown).
+Result<std::vector<std::vector<Value>>> r_values(const Rule& rule, const ACSetMorphism& m) {
+    const auto& s = rule.R.schema();
+    std::vector<std::vector<Value>> out(s.num_attr_types());
     for (std::uint32_t t = 0; t < s.num_attr_types(); ++t) {
-        for (std::uint32_t j = 0; j < rule.R.num_vars(AttrTypeId(t)); ++j) {
-            auto v = values.var_value(AttrTypeId(t), j);
-            if (!v) {
-                return fail(fmt::format("cannot compute the value of {} in Eff: {}",
-                                        rule.R.value_label(AttrTypeId(t), Value::var(j)),
-                                        v.error()));
+        AttrTypeId ty(t);
+        out[t].assign(rule.R.num_vars(ty), Value());
+        for (std::uint32_t k = 0; k < rule.K.num_vars(ty); ++k) {
+            const Value& rv = rule.r.var(ty, k);
+            if (!rv.is_var()) {
+                continue; // a kept value the rule overwrites with a constant
             }
-            r_var[t].push_back(*v);
+            const Value& lv = rule.l.var(ty, k);
+            Value bound = lv.is_var() ? m.var(ty, lv.var_index()) : lv;
+            Value& slot = out[t][rv.var_index()];
+            if (!slot.is_unset() && !(slot == bound)) {
+                return fail(fmt::format("Eff merges kept values that the match binds to {} and "
+                                        "{}; rules that glue kept values are not supported",
+                                        slot.to_string(), bound.to_string()));
+            }
+            slot = bound;
         }
-    }
-    InPlaceOutcome out;
-    if (track_origin) {
-        for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
-            std::vector<Part> ids(x.num_parts(ObId(o)));
-            for (Part p = 0; p < ids.size(); ++p) {
-                ids[p] = p;
-            }
-            out.origin.push_back(std::move(ids));
-        }
-    }
-    // R's kept parts point at their X parts; these ids follow the pop-and-swaps below.
-    auto& r_to_x = out.r_to_x.components;
-    r_to_x.resize(s.num_obs());
-    for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
-        ObId ob(o);
-        r_to_x[o].assign(rule.R.num_parts(ob), kNoPart);
-        for (Part rp = 0; rp < rule.R.num_parts(ob); ++rp) {
-            Part k = shape.k_of_r[o][rp];
-            if (k != kNoPart) {
-                r_to_x[o][rp] = m(ob, rule.l(ob, k));
-            }
-        }
-    }
-    // Variables that may lose their last cell: those held by deleted or overwritten cells.
-    std::vector<std::vector<std::uint32_t>> orphan_candidates(s.num_attr_types());
-    auto note_var = [&](AttrId a, Part p) {
-        const Value& v = x.subpart(a, p);
-        if (v.is_var()) {
-            orphan_candidates[s.attr(a).codom.index()].push_back(v.var_index());
-        }
-    };
-    // Delete, largest id first, so the part moved into a freed slot is never one to delete.
-    auto to_delete = parts_to_delete(shape, x, m);
-    if (!to_delete) {
-        return fail(to_delete.error());
-    }
-    auto& deleted = *to_delete;
-    for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
-        ObId ob(o);
-        for (auto it = deleted[o].rbegin(); it != deleted[o].rend(); ++it) {
-            Part y = *it;
-            for (AttrId a : s.attrs_from(ob)) {
-                note_var(a, y);
-            }
-            Part moved = x.remove_part(ob, y);
-            if (track_origin) {
-                out.origin[o][y] = out.origin[o].back();
-                out.origin[o].pop_back();
-            }
-            if (moved != kNoPart) {
-                std::replace(r_to_x[o].begin(), r_to_x[o].end(), moved, y);
-            }
-        }
-    }
-    // Create R's new parts in R's order.
-    for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
-        ObId ob(o);
-        for (Part rp = 0; rp < rule.R.num_parts(ob); ++rp) {
-            if (r_to_x[o][rp] == kNoPart) {
-                r_to_x[o][rp] = x.add_part(ob, rule.R.part_name(ob, rp));
-                if (track_origin) {
-                    out.origin[o].push_back(kNoPart);
-                }
-            }
-        }
-    }
-    // Homs of R's parts: R's value wins; unset in R keeps x's value (a kept part's unchanged hom).
-    for (std::uint32_t h = 0; h < s.num_homs(); ++h) {
-        HomId f(h);
-        ObId dom = s.hom(f).dom, codom = s.hom(f).codom;
-        for (Part rp = 0; rp < rule.R.num_parts(dom); ++rp) {
-            Part t = rule.R.subpart(f, rp);
-            if (t != kNoPart) {
-                x.set_subpart(f, r_to_x[dom.index()][rp], r_to_x[codom.index()][t]);
-            }
-        }
-    }
-    // Attributes of R's parts; a fresh unknown for each R variable bound by nothing.
-    std::vector<std::vector<Value>> fresh(s.num_attr_types());
-    for (std::uint32_t t = 0; t < s.num_attr_types(); ++t) {
-        fresh[t].assign(rule.R.num_vars(AttrTypeId(t)), Value());
-    }
-    for (std::uint32_t at = 0; at < s.num_attrs(); ++at) {
-        AttrId a(at);
-        ObId dom = s.attr(a).dom;
-        AttrTypeId ty = s.attr(a).codom;
-        for (Part rp = 0; rp < rule.R.num_parts(dom); ++rp) {
-            Value rv = rule.R.subpart(a, rp);
-            Part target = r_to_x[dom.index()][rp];
-            Value v;
-            if (rv.is_concrete()) {
-                v = rv;
-            } else if (rv.is_var()) {
-                v = r_var[ty.index()][rv.var_index()];
-                if (v.is_unset()) {
-                    auto& f = fresh[ty.index()][rv.var_index()];
-                    if (f.is_unset()) {
-                        f = x.add_var(ty, rule.R.var_name(ty, rv.var_index()));
-                    }
-                    v = f;
-                }
-            } else {
-                continue; // unset in R: a kept part's value is unchanged, a created part's unset
-            }
-            if (!(x.subpart(a, target) == v)) {
-                note_var(a, target);
-                x.set_subpart(a, target, v);
-            }
-        }
-    }
-    // R's variables in the result (for the returned morphism), then drop orphaned variables,
-    // highest index first so a pop-and-swap never moves a candidate still to be examined.
-    auto& r_vars = out.r_to_x.var_components;
-    r_vars.resize(s.num_attr_types());
-    for (std::uint32_t t = 0; t < s.num_attr_types(); ++t) {
-        for (std::uint32_t j = 0; j < rule.R.num_vars(AttrTypeId(t)); ++j) {
-            Value v = r_var[t][j];
-            r_vars[t].push_back(v.is_unset() ? fresh[t][j] : v);
-        }
-        auto& cands = orphan_candidates[t];
-        std::sort(cands.begin(), cands.end(), std::greater<>());
-        cands.erase(std::unique(cands.begin(), cands.end()), cands.end());
-        for (std::uint32_t j : cands) {
-            if (!x.var_incident(AttrTypeId(t), j).empty()) {
+        for (std::uint32_t j = 0; j < rule.R.num_vars(ty); ++j) {
+            bool has_expr =
+                t < rule.exprs.size() && j < rule.exprs[t].size() && rule.exprs[t][j].has_value();
+            if (!out[t][j].is_unset() || !has_expr) {
                 continue;
             }
-            std::uint32_t moved = x.remove_var(AttrTypeId(t), j);
-            for (Value& v : r_vars[t]) {
-                if (v == Value::var(j)) {
-                    v = Value(); // the variable is gone (an R variable used by no cell)
-                } else if (moved != UINT32_MAX && v == Value::var(moved)) {
-                    v = Value::var(j);
-                }
+            auto v = evaluate(*rule.exprs[t][j],
+                              [&](AttrTypeId type, std::uint32_t var) { return m.var(type, var); });
+            if (!v) {
+                return fail(fmt::format("cannot compute the value of {} in Eff: {}",
+                                        rule.R.value_label(ty, Value::var(j)), v.error()));
             }
+            out[t][j] = *v;
         }
-    }
-    if (!rule.relations.empty()) {
-        detail::merge_created_facts(rule, x, out.r_to_x, track_origin ? &out.origin : nullptr);
     }
     return out;
 }
 
-// Copies x with its parts reordered: order[o] lists the old ids in their new order.
-ACSet permuted(const ACSet& x, const std::vector<std::vector<Part>>& order) {
-    const auto& s = x.schema();
-    ACSet y(x.schema_ptr());
-    std::vector<std::vector<Part>> new_id(s.num_obs());
+// What an R cell of a kept part writes into the result: an X part, a created R part, a value,
+// or a fresh unknown of R; equal for two cells exactly when they write the same thing.
+struct Written {
+    enum class Kind : std::uint8_t { None, XPart, Created, Value, Fresh } kind = Kind::None;
+    Part part = kNoPart;
+    Value value;
+
+    friend bool operator==(const Written&, const Written&) = default;
+};
+
+Written written_hom(const Shape& shape, const ACSetMorphism& m, HomId f, Part rp) {
+    const Rule& rule = shape.rule;
+    Part t = rule.R.subpart(f, rp);
+    if (t == kNoPart) {
+        return {};
+    }
+    ObId codom = rule.R.schema().hom(f).codom;
+    Part k = shape.k_of_r[codom.index()][t];
+    if (k == kNoPart) {
+        return {Written::Kind::Created, t, Value()};
+    }
+    return {Written::Kind::XPart, m(codom, rule.l(codom, k)), Value()};
+}
+
+Written written_attr(const Rule& rule, const std::vector<std::vector<Value>>& r_var, AttrId a,
+                     Part rp) {
+    Value v = rule.R.subpart(a, rp);
+    if (v.is_unset()) {
+        return {};
+    }
+    if (v.is_var()) {
+        const Value& bound = r_var[rule.R.schema().attr(a).codom.index()][v.var_index()];
+        if (bound.is_unset()) {
+            return {Written::Kind::Fresh, v.var_index(), Value()};
+        }
+        v = bound;
+    }
+    return {Written::Kind::Value, kNoPart, v};
+}
+
+// Why the match cannot be applied because it sends several kept parts to one part of X and Eff
+// gives them different values of a hom or attribute, which the pushout would glue.
+std::optional<std::string> identified_kept_problem(const Shape& shape, const ACSetMorphism& m,
+                                                   const std::vector<std::vector<Value>>& r_var) {
+    const Rule& rule = shape.rule;
+    const auto& s = rule.K.schema();
     for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
-        new_id[o].assign(x.num_parts(ObId(o)), kNoPart);
-        for (Part old : order[o]) {
-            new_id[o][old] = y.add_part(ObId(o), x.part_name(ObId(o), old));
+        ObId ob(o);
+        std::vector<std::pair<Part, Part>> by_image; // (X part, R part of a kept part)
+        for (Part k = 0; k < rule.K.num_parts(ob); ++k) {
+            by_image.emplace_back(m(ob, rule.l(ob, k)), rule.r(ob, k));
+        }
+        std::sort(by_image.begin(), by_image.end());
+        // Within a group of kept parts with one image, every cell Eff sets must agree with the
+        // first one set; `first` is the group's first R part with that cell set.
+        auto conflict = [&](std::size_t begin, std::size_t end, auto written) {
+            std::optional<std::pair<Part, Written>> first;
+            for (std::size_t i = begin; i < end; ++i) {
+                Written w = written(by_image[i].second);
+                if (w.kind == Written::Kind::None) {
+                    continue;
+                }
+                if (!first) {
+                    first.emplace(by_image[i].second, w);
+                } else if (!(first->second == w)) {
+                    return std::optional<std::pair<Part, Part>>({first->first, by_image[i].second});
+                }
+            }
+            return std::optional<std::pair<Part, Part>>();
+        };
+        for (std::size_t begin = 0, end = 0; begin < by_image.size(); begin = end) {
+            while (end < by_image.size() && by_image[end].first == by_image[begin].first) {
+                ++end;
+            }
+            if (end - begin < 2) {
+                continue;
+            }
+            std::optional<std::pair<Part, Part>> pair;
+            std::string what;
+            for (HomId f : s.homs_from(ob)) {
+                if (!pair && (pair = conflict(begin, end, [&](Part rp) {
+                                  return written_hom(shape, m, f, rp);
+                              }))) {
+                    what = s.hom(f).name;
+                }
+            }
+            for (AttrId at : s.attrs_from(ob)) {
+                if (!pair && (pair = conflict(begin, end, [&](Part rp) {
+                                  return written_attr(rule, r_var, at, rp);
+                              }))) {
+                    what = s.attr(at).name;
+                }
+            }
+            if (pair) {
+                return fmt::format(
+                    "the match sends the kept parts {} and {} of {} to one part, and "
+                    "Eff gives them different values of {}: not supported",
+                    rule.R.part_label(ob, pair->first), rule.R.part_label(ob, pair->second),
+                    s.ob(ob).name, what);
+            }
         }
     }
-    for (std::uint32_t t = 0; t < s.num_attr_types(); ++t) {
-        for (std::uint32_t j = 0; j < x.num_vars(AttrTypeId(t)); ++j) {
-            y.add_var(AttrTypeId(t), x.var_name(AttrTypeId(t), j));
-        }
-    }
-    for (std::uint32_t h = 0; h < s.num_homs(); ++h) {
-        HomId f(h);
-        ObId dom = s.hom(f).dom, codom = s.hom(f).codom;
-        for (Part p = 0; p < x.num_parts(dom); ++p) {
-            Part t = x.subpart(f, p);
-            y.set_subpart(f, new_id[dom.index()][p],
-                          t == kNoPart ? kNoPart : new_id[codom.index()][t]);
-        }
-    }
-    for (std::uint32_t at = 0; at < s.num_attrs(); ++at) {
-        AttrId a(at);
-        ObId dom = s.attr(a).dom;
-        for (Part p = 0; p < x.num_parts(dom); ++p) {
-            y.set_subpart(a, new_id[dom.index()][p], x.subpart(a, p));
-        }
-    }
-    return y;
+    return std::nullopt;
 }
 
 } // namespace
 
+Result<std::vector<std::vector<Value>>> application_values(const Shape& shape,
+                                                           const ACSetMorphism& m) {
+    if (!shape.r_monic) {
+        return fail(kGluingKeptParts);
+    }
+    auto r_var = r_values(shape.rule, m);
+    if (!r_var) {
+        return r_var;
+    }
+    if (auto problem = identified_kept_problem(shape, m, *r_var)) {
+        return fail(*problem);
+    }
+    return r_var;
+}
+
+} // namespace detail
+
 std::vector<ACSetMorphism> find_matches(const Rule& rule, const ACSet& x,
                                         const MatchOptions& options) {
-    Shape shape(rule);
+    detail::Shape shape(rule);
     const auto& s = x.schema();
     hom::HomSearchOptions opt;
     opt.monic_all = options.monic;
@@ -560,8 +316,8 @@ std::vector<ACSetMorphism> find_matches(const Rule& rule, const ACSet& x,
     bool only_conditions =
         options.monic && rule.semantics == Semantics::DPO && shape.dangling_by_counts;
     auto result = hom::for_each_homomorphism(rule.L, x, opt, [&](const ACSetMorphism& m) {
-        bool valid = only_conditions ? !condition_problem(rule, x, m).has_value()
-                                     : !validity_problem(shape, x, m).has_value();
+        bool valid = only_conditions ? !detail::condition_problem(rule, x, m).has_value()
+                                     : !detail::validity_problem(shape, x, m).has_value();
         if (valid) {
             matches.push_back(m);
         }
@@ -577,74 +333,10 @@ std::optional<std::string> match_problem(const Rule& rule, const ACSet& x, const
     if (!failures.empty()) {
         return "the match is not a morphism: " + hom::describe(failures.front(), rule.L, x);
     }
-    if (monic && !is_injective(m, rule.L)) {
+    if (monic && !detail::is_injective(m, rule.L)) {
         return std::string("the match is not monic");
     }
-    return validity_problem(Shape(rule), x, m);
-}
-
-Result<ACSetMorphism> rewrite_in_place(const Rule& rule, ACSet& x, const ACSetMorphism& m) {
-    if (auto problem = match_problem(rule, x, m, /*monic=*/false)) {
-        return fail(*problem);
-    }
-    Shape shape(rule);
-    if (!shape.r_monic) {
-        return fail(kGluingKeptParts);
-    }
-    auto out = apply_in_place(shape, x, m, /*track_origin=*/false);
-    if (!out) {
-        return fail(out.error());
-    }
-    return std::move(out->r_to_x);
-}
-
-Result<Rewrite> rewrite(const Rule& rule, const ACSet& x, const ACSetMorphism& m) {
-    if (auto problem = match_problem(rule, x, m, /*monic=*/false)) {
-        return fail(*problem);
-    }
-    Shape shape(rule);
-    const auto& s = x.schema();
-    if (!shape.r_monic) {
-        return fail(kGluingKeptParts);
-    }
-    ACSet y = x;
-    auto out = apply_in_place(shape, y, m, /*track_origin=*/true);
-    if (!out) {
-        return fail(out.error());
-    }
-    // Catlab's numbering: R's parts first (in R's order), then the untouched parts in X's order.
-    std::vector<std::vector<Part>> order(s.num_obs());
-    for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
-        std::vector<char> placed(y.num_parts(ObId(o)), 0);
-        for (Part p : out->r_to_x.components[o]) {
-            if (!placed[p]) {
-                placed[p] = 1;
-                order[o].push_back(p);
-            }
-        }
-        std::vector<Part> rest;
-        for (Part p = 0; p < y.num_parts(ObId(o)); ++p) {
-            if (!placed[p]) {
-                rest.push_back(p);
-            }
-        }
-        std::sort(rest.begin(), rest.end(),
-                  [&](Part a, Part b) { return out->origin[o][a] < out->origin[o][b]; });
-        order[o].insert(order[o].end(), rest.begin(), rest.end());
-    }
-    Rewrite result{permuted(y, order), {}};
-    result.r_to_result.var_components = out->r_to_x.var_components;
-    result.r_to_result.components.resize(s.num_obs());
-    for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
-        std::vector<Part> new_id(y.num_parts(ObId(o)));
-        for (Part i = 0; i < order[o].size(); ++i) {
-            new_id[order[o][i]] = i;
-        }
-        for (Part p : out->r_to_x.components[o]) {
-            result.r_to_result.components[o].push_back(new_id[p]);
-        }
-    }
-    return result;
+    return detail::validity_problem(detail::Shape(rule), x, m);
 }
 
 } // namespace catplan::rewrite

@@ -7,15 +7,27 @@
 // matches are pruned rather than filtered; identification cannot fail for monic matches; NACs are
 // checked once a match is complete.
 //
-// Two ways to apply a rule at a match:
-//   - rewrite(): functional, X is unchanged. Y's parts are numbered as Catlab numbers a pushout:
-//     R's parts first (kept parts take the place of their R part), then the untouched parts of X in
-//     X's order. This is the mathematical reference.
-//   - rewrite_in_place(): mutates X; the cost is proportional to the parts the rule touches (and
-//     their incident parts), not to the size of X. Numbering: deleted parts are removed by
-//     pop-and-swap (ACSet::remove_part) in decreasing id order per object, created parts are
-//     appended in R's order, kept parts keep their ids unless moved by a pop-and-swap. The planner
-//     uses this. Both give isomorphic results (tested).
+// Two ways to apply a rule at a match, which agree up to isomorphism (a property test on seeded
+// random rules and states) and reject the same matches for the same reasons:
+//   - rewrite(): the reference, functional (X is unchanged). As AlgebraicRewriting's DPO: the
+//     pushout complement Z = X - m(L - l(K)) (colimit::pushout_complement), then the pushout
+//     Y = R +_K Z (colimit::pushout), then the values of R's expressions substituted (a pushout
+//     along the variables, Catlab's sub_vars). The update semantics of rule.hpp live in the span
+//     the colimits glue along: Z leaves open the cells the rule rewrites (a redirected hom, an
+//     attribute R sets anew on a kept part), so R's value is the only one in the gluing. Y then
+//     forgets the unknowns the step left without a cell. SPO rules delete the cascade in Z.
+//     Numbering (Catlab's, from the pushout's coproduct [R, Z]): R's parts first, in R's order, a
+//     kept part in the place of its R part; then the untouched parts of X in X's order. Unknowns
+//     likewise: those of R that stay unknown (fresh, or bound to an unknown of X), then X's
+//     remaining ones in X's order. Kept parts and unknowns keep X's names, created ones take R's.
+//   - rewrite_in_place(): the fast path, used by planning and transfer. It mutates X; the cost is
+//     proportional to the parts the rule touches (and their incident parts), not to the size of
+//     X. Numbering: deleted parts are removed by pop-and-swap (ACSet::remove_part) in decreasing
+//     id order per object, created parts are appended in R's order, kept parts keep their ids
+//     unless moved by a pop-and-swap; unknowns left without a cell are removed the same way.
+// Both check a match with match_problem's checks (one gluing mechanism: colimit::deletion) and
+// compute R's values with one function, then reject a rule whose r glues two kept parts, or two
+// kept values the match binds differently (not supported).
 
 #include "catplan/hom/hom_search.hpp"
 #include "catplan/rewrite/rule.hpp"

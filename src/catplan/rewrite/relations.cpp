@@ -64,18 +64,13 @@ Part equal_part(const ACSet& x, ObId ob, Part p, const std::vector<Part>& remove
 
 } // namespace
 
-void merge_created_facts(const Rule& rule, ACSet& x, hom::ACSetMorphism& r_to_x,
-                         std::vector<std::vector<Part>>* origin) {
+void merge_created_facts(const Rule& rule, ACSet& x, hom::ACSetMorphism& r_to_x) {
     for (ObId ob : rule.relations) {
         auto& images = r_to_x.components[ob.index()];
-        std::vector<bool> kept(rule.R.num_parts(ob), false);
-        for (Part k : rule.r.components[ob.index()]) {
-            kept[k] = true;
-        }
         std::vector<Part> removed;
-        for (Part rp = 0; rp < kept.size(); ++rp) {
+        for (Part rp : rule.created_parts(ob)) {
             Part p = images[rp];
-            if (kept[rp] || referred_to(x, ob, p)) {
+            if (referred_to(x, ob, p)) {
                 continue;
             }
             Part q = equal_part(x, ob, p, removed);
@@ -88,11 +83,6 @@ void merge_created_facts(const Rule& rule, ACSet& x, hom::ACSetMorphism& r_to_x,
         std::sort(removed.begin(), removed.end(), std::greater<>());
         for (Part p : removed) {
             Part moved = x.remove_part(ob, p);
-            if (origin != nullptr) {
-                auto& o = (*origin)[ob.index()];
-                o[p] = o.back();
-                o.pop_back();
-            }
             if (moved != kNoPart) {
                 std::replace(images.begin(), images.end(), moved, p);
             }

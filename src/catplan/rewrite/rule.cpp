@@ -1,5 +1,8 @@
 #include "catplan/rewrite/rule.hpp"
 
+#include "catplan/base/assert.hpp"
+#include "catplan/colimit/colimit.hpp"
+
 #include <cmath>
 #include <fmt/format.h>
 
@@ -157,6 +160,45 @@ Result<Value> evaluate(const AttrExpr& e,
     default:
         return compare(e.op, args[0], args[1]);
     }
+}
+
+namespace {
+
+// Per object, the parts of L, K and R (what a rule's anatomy was computed from).
+std::vector<std::size_t> part_counts(const Rule& rule) {
+    std::vector<std::size_t> counts;
+    for (std::uint32_t o = 0; o < rule.L.schema().num_obs(); ++o) {
+        for (const ACSet* x : {&rule.L, &rule.K, &rule.R}) {
+            counts.push_back(x->num_parts(ObId(o)));
+        }
+    }
+    return counts;
+}
+
+bool same_counts(const Rule& rule, const std::vector<std::size_t>& counts) {
+    std::size_t i = 0;
+    for (std::uint32_t o = 0; o < rule.L.schema().num_obs(); ++o) {
+        for (const ACSet* x : {&rule.L, &rule.K, &rule.R}) {
+            if (counts[i++] != x->num_parts(ObId(o))) {
+                return false;
+            }
+        }
+    }
+    return true;
+}
+
+} // namespace
+
+const Rule::Anatomy& Rule::anatomy() const {
+    if (!anatomy_) {
+        anatomy_ = std::make_shared<const Anatomy>(Anatomy{colimit::parts_outside_image(l, L),
+                                                           colimit::parts_outside_image(r, R),
+                                                           part_counts(*this)});
+    } else {
+        CATPLAN_ASSERT(same_counts(*this, anatomy_->counts),
+                       "a rule's states changed after its deleted and created parts were read");
+    }
+    return *anatomy_;
 }
 
 std::vector<RuleProblem> check_rule(const Rule& rule) {

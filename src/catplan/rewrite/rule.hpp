@@ -118,7 +118,25 @@ struct Rule {
     SourceRange range;
 
     /// A rule with empty states on a schema (to be filled by a builder or the elaborator).
-    explicit Rule(schema::SchemaPtr s) : L(s), K(s), R(s) {}
+    explicit Rule(const schema::SchemaPtr& s) : L(s), K(s), R(s) {}
+
+    /// The parts of L at ob outside l(K), in increasing order: what the rule deletes.
+    const std::vector<Part>& deleted_parts(ObId ob) const { return anatomy().deleted[ob.index()]; }
+
+    /// The parts of R at ob outside r(K), in increasing order: what the rule creates.
+    const std::vector<Part>& created_parts(ObId ob) const { return anatomy().created[ob.index()]; }
+
+private:
+    // What the rule deletes and creates, computed on first use. A builder fills L, K, R, l and r
+    // first; changing them afterwards is a misuse (asserted on the part counts).
+    struct Anatomy {
+        std::vector<std::vector<Part>> deleted, created;
+        std::vector<std::size_t> counts; // per object: parts of L, K, R when computed
+    };
+
+    const Anatomy& anatomy() const;
+
+    mutable std::shared_ptr<const Anatomy> anatomy_;
 };
 
 using RulePtr = std::shared_ptr<const Rule>;

@@ -2,6 +2,7 @@
 
 #include "catplan/base/assert.hpp"
 #include "catplan/plan/validate.hpp"
+#include "catplan/transfer/terms.hpp"
 
 #include <algorithm>
 #include <fmt/format.h>
@@ -37,47 +38,6 @@ struct Goal {
     std::vector<Statement> statements;
 };
 
-// The words for a goal part: its name, or for an unnamed part the terms of named parts that
-// reach it (`plateIsReceptacle(plate)`), then its label (`#3`).
-std::vector<std::vector<std::vector<std::string>>> part_words(const ACSet& g) {
-    const auto& s = g.schema();
-    std::vector<std::vector<std::vector<std::string>>> words(s.num_obs());
-    for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
-        words[o].resize(g.num_parts(ObId(o)));
-    }
-    for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
-        for (Part p = 0; p < g.num_parts(ObId(o)); ++p) {
-            std::string_view name = g.part_name(ObId(o), p);
-            if (name.empty()) {
-                continue;
-            }
-            for (HomId f : s.homs_from(ObId(o))) {
-                Part q = g.subpart(f, p);
-                ObId d = s.hom(f).codom;
-                if (q != kNoPart && g.part_name(d, q).empty()) {
-                    words[d.index()][q].push_back(fmt::format("{}({})", s.hom(f).name, name));
-                }
-            }
-        }
-    }
-    for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
-        for (Part p = 0; p < g.num_parts(ObId(o)); ++p) {
-            words[o][p].push_back(g.part_label(ObId(o), p));
-        }
-    }
-    return words;
-}
-
-// The first word for a part other than `avoid` (the term a statement is about already).
-const std::string& word_for(const std::vector<std::string>& words, std::string_view avoid = {}) {
-    for (const auto& w : words) {
-        if (w != avoid) {
-            return w;
-        }
-    }
-    return words.back();
-}
-
 Goal read_goal(const ACSet& g) {
     const auto& s = g.schema();
     Goal out;
@@ -88,13 +48,11 @@ Goal read_goal(const ACSet& g) {
             out.parts.push_back({ObId(o), p});
         }
     }
-    const auto words = part_words(g);
     for (std::size_t i = 0; i < out.parts.size(); ++i) {
         auto [ob, p] = out.parts[i];
-        const std::string& label = word_for(words[ob.index()][p]);
         Statement st;
         st.part = i;
-        st.text = fmt::format("{} {}", s.ob(ob).name, label);
+        st.text = part_statement(g, ob, p);
         out.statements.push_back(st);
         for (HomId f : s.homs_from(ob)) {
             Part q = g.subpart(f, p);
@@ -106,9 +64,7 @@ Goal read_goal(const ACSet& g) {
             h.part = i;
             h.hom = f;
             h.other = out.index[s.hom(f).codom.index()][q];
-            std::string term = fmt::format("{}({})", s.hom(f).name, label);
-            h.text =
-                fmt::format("{} == {}", term, word_for(words[s.hom(f).codom.index()][q], term));
+            h.text = hom_statement(g, f, p);
             out.statements.push_back(h);
         }
         for (AttrId a : s.attrs_from(ob)) {
@@ -121,7 +77,7 @@ Goal read_goal(const ACSet& g) {
             at.part = i;
             at.attr = a;
             at.value = v;
-            at.text = fmt::format("{}({}) == {}", s.attr(a).name, label, v.to_string());
+            at.text = attr_statement(g, a, p);
             out.statements.push_back(at);
         }
     }

@@ -3,7 +3,12 @@
 #include "catplan/migrate/migration.hpp"
 #include "catplan/plan/validate.hpp"
 #include "catplan/rewrite/dpo.hpp"
+#include "catplan/transfer/correspond.hpp"
+#include "catplan/transfer/divergence.hpp"
+#include "catplan/transfer/named_state.hpp"
 #include "catplan/transfer/rename.hpp"
+#include "catplan/transfer/repair.hpp"
+#include "catplan/transfer/terms.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -12,7 +17,6 @@
 #include <functional>
 #include <map>
 #include <string>
-#include <sys/resource.h>
 #include <unordered_map>
 
 namespace catplan::transfer {
@@ -31,189 +35,6 @@ std::string lowercase(std::string_view text) {
     }
     return out;
 }
-
-// A state whose parts are named, with an index name -> part per object kept in step with every
-// rewrite (so a step costs what it touches, not the size of the state). A name shared by two
-// parts of an object maps to kNoPart (ambiguous).
-class NamedState {
-public:
-    explicit NamedState(ACSet x)
-        : x_(std::move(x)), index_(x_.schema().num_obs()), suffix_hints_(index_.size()) {
-        for (std::uint32_t o = 0; o < index_.size(); ++o) {
-            index_[o].reserve(x_.num_parts(ObId(o)));
-            for (Part p = 0; p < x_.num_parts(ObId(o)); ++p) {
-                add(ObId(o), p);
-            }
-        }
-    }
-
-    const ACSet& state() const { return x_; }
-
-    /// The state, moved out (the names index is left behind).
-    ACSet release() && { return std::move(x_); }
-
-    /// The only part of ob with this name, or kNoPart.
-    Part find(ObId ob, std::string_view name) const {
-        auto it = index_[ob.index()].find(name);
-        return it == index_[ob.index()].end() ? kNoPart : it->second;
-    }
-
-    /// Applies rule at m in place, naming each created part with name_of(ob, part of R).
-    Result<ACSetMorphism> apply(const rewrite::Rule& rule, const ACSetMorphism& m,
-                                const std::function<std::string(ObId, Part)>& name_of) {
-        const auto& s = x_.schema();
-        // The parts to be deleted: matched parts of L outside l's image.
-        std::vector<std::vector<Part>> deleted(s.num_obs());
-        for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
-            std::vector<bool> kept(rule.L.num_parts(ObId(o)), false);
-            for (Part k : rule.l.components[o]) {
-                kept[k] = true;
-            }
-            for (Part p = 0; p < kept.size(); ++p) {
-                if (!kept[p]) {
-                    deleted[o].push_back(m.components[o][p]);
-                }
-            }
-        }
-        std::vector<Part> survivors(s.num_obs());
-        for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
-            for (Part p : deleted[o]) {
-                remove(ObId(o), p);
-            }
-            survivors[o] = static_cast<Part>(x_.num_parts(ObId(o)) - deleted[o].size());
-        }
-        auto r_to_x = rewrite::rewrite_in_place(rule, x_, m);
-        if (!r_to_x) {
-            return r_to_x;
-        }
-        // Pop-and-swap moved surviving parts into deleted slots below the count of survivors;
-        // the created parts come after them (R's order) and are named below. A moved part's
-        // entry still holds its old id: point it at the slot it sits in now.
-        for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
-            for (Part p : deleted[o]) {
-                if (p < survivors[o]) {
-                    moved(ObId(o), p, survivors[o]);
-                }
-            }
-        }
-        name_created(rule, *r_to_x, survivors, name_of);
-        return r_to_x;
-    }
-
-    /// A name for a new part of ob, starting from base, that no part of ob has: base, else
-    /// base2, base3, ... (the first free one). The search for a suffix starts at a hint per base
-    /// below which every suffix is taken, lowered when a name with a smaller suffix is freed, so
-    /// that a step costs what it creates, not the number of names sharing the base.
-    std::string fresh_name(ObId ob, const std::string& base) {
-        if (!taken(ob, base)) {
-            return base;
-        }
-        auto& hints = suffix_hints_[ob.index()];
-        auto it = hints.find(base);
-        if (it == hints.end()) {
-            it = hints.emplace(base, 2).first;
-        }
-        for (std::uint64_t k = it->second;; ++k) {
-            std::string name = fmt::format("{}{}", base, k);
-            if (!taken(ob, name)) {
-                it->second = k + 1; // the caller gives the name to a part at once
-                return name;
-            }
-        }
-    }
-
-private:
-    // Keys are views of part names, which are interned for the life of the process; a name
-    // that several parts share maps to kNoPart.
-    using Index = std::unordered_map<std::string_view, Part>;
-
-    bool taken(ObId ob, std::string_view name) const { return index_[ob.index()].count(name) > 0; }
-
-    void add(ObId ob, Part p) {
-        std::string_view n = x_.part_name(ob, p);
-        if (n.empty()) {
-            return;
-        }
-        auto [it, fresh] = index_[ob.index()].emplace(n, p);
-        if (!fresh && it->second != p) {
-            it->second = kNoPart;
-        }
-    }
-
-    // Forgets p's name (a shared name stays taken: which part keeps it is not known).
-    void remove(ObId ob, Part p) {
-        std::string_view n = x_.part_name(ob, p);
-        auto& idx = index_[ob.index()];
-        auto it = idx.find(n);
-        if (it != idx.end() && it->second == p) {
-            idx.erase(it);
-            freed(ob, n);
-        }
-    }
-
-    // The part now at slot p (p < survivors) was moved there by a pop-and-swap from an id at or
-    // above survivors. Its entry points at that old id, unless the name is shared with another
-    // surviving part (ambiguous, kNoPart, or held by a part below survivors that has the name).
-    void moved(ObId ob, Part p, Part survivors) {
-        std::string_view n = x_.part_name(ob, p);
-        if (n.empty()) {
-            return;
-        }
-        auto [it, fresh] = index_[ob.index()].emplace(n, p);
-        Part& e = it->second;
-        if (fresh || e == p) {
-            return;
-        }
-        bool shared = e == kNoPart || (e < survivors && x_.part_name(ob, e) == n);
-        e = shared ? kNoPart : p;
-    }
-
-    // A name base<k> no longer taken lowers the hint of base to k.
-    void freed(ObId ob, std::string_view name) {
-        for (auto& [base, hint] : suffix_hints_[ob.index()]) {
-            if (name.size() <= base.size() || name.substr(0, base.size()) != base) {
-                continue;
-            }
-            std::string_view digits = name.substr(base.size());
-            if (digits[0] == '0' || digits.size() > 18 ||
-                !std::all_of(digits.begin(), digits.end(),
-                             [](char c) { return c >= '0' && c <= '9'; })) {
-                continue;
-            }
-            std::uint64_t k = std::stoull(std::string(digits));
-            if (k >= 2 && k < hint) {
-                hint = k;
-            }
-        }
-    }
-
-    // Names the parts the rule created; a created fact merged into one already there
-    // (Rule::relations) is not new and keeps its name.
-    void name_created(const rewrite::Rule& rule, const ACSetMorphism& r_to_x,
-                      const std::vector<Part>& survivors,
-                      const std::function<std::string(ObId, Part)>& name_of) {
-        const auto& s = x_.schema();
-        for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
-            std::vector<bool> kept(rule.R.num_parts(ObId(o)), false);
-            for (Part k : rule.r.components[o]) {
-                kept[k] = true;
-            }
-            for (Part q = 0; q < kept.size(); ++q) {
-                Part p = r_to_x.components[o][q];
-                if (!kept[q] && p >= survivors[o]) {
-                    x_.set_part_name(ObId(o), p, name_of(ObId(o), q));
-                    add(ObId(o), p);
-                }
-            }
-        }
-    }
-
-    ACSet x_;
-    /// Per object: name -> the parts that have it.
-    std::vector<Index> index_;
-    /// Per object: for each base fresh_name had to suffix, the smallest suffix that may be free.
-    std::vector<std::map<std::string, std::uint64_t, std::less<>>> suffix_hints_;
-};
 
 // Names every unnamed part after its label (#7), so that names can follow every part.
 ACSet named(const ACSet& x) {
@@ -384,6 +205,9 @@ public:
         out_.timings.migrate_ms = ms_since(t0);
         x_.emplace(std::move(x0));
         y_.emplace(std::move(y0));
+        if (options_.check_divergence || options_.follow_source) {
+            check_.emplace(f_, renaming_);
+        }
         keep_states();
         t0 = Clock::now();
         for (std::size_t i = 0; i < plan_.steps.size(); ++i) {
@@ -394,6 +218,7 @@ public:
         }
         out_.timings.apply_ms = ms_since(t0);
         auto source = finish_source();
+        out_.whole_comparisons = check_ ? check_->whole_comparisons() : 0;
         out_.final_state = std::move(*y_).release();
         y_.reset();
         return source;
@@ -462,18 +287,13 @@ private:
         StepTransfer st;
         st.source = s;
         st.target = step_of(*a->target, matches[0], y_->state());
-        st.source_bindings = plan::describe_match(*m, a->source->L, x_->state());
-        st.target_bindings = plan::describe_match(matches[0], a->target->L, y_->state());
+        st.source_bindings = describe_bindings(*m, a->source->L, x_->state());
+        st.target_bindings = describe_bindings(matches[0], a->target->L, y_->state());
         st.lost_parameters = lost_parameters(*a->source, *a->target);
-        // A created part is named after its generator in the rule, or after its object and the
-        // step that created it (block@2).
-        auto r_to_x = x_->apply(*a->source, *m, [&](ObId ob, Part q) {
-            std::string base(a->source->R.part_name(ob, q));
-            if (base.empty()) {
-                base = fmt::format("{}@{}", lowercase(problem_.domain->schema->ob(ob).name), i + 1);
-            }
-            return x_->fresh_name(ob, base);
-        });
+        if (comparing()) {
+            check_->before(*m, *x_, matches[0], *y_);
+        }
+        auto r_to_x = apply_source(i, *a->source, *m);
         CATPLAN_ASSERT(r_to_x, "a valid source match failed to apply");
         // A part created in the target is named after the source part its tuple starts at.
         auto applied = y_->apply(*a->target, matches[0], [&](ObId c, Part q) {
@@ -487,6 +307,15 @@ private:
         if (!applied) {
             return fail_at(i, applied.error());
         }
+        if (comparing()) {
+            if (auto d = check_->after(i, *r_to_x, *x_, *applied, *y_)) {
+                d->where = where(i);
+                out_.verdict.divergences.push_back(std::move(*d));
+            }
+        }
+        if (options_.follow_source) {
+            follow_source();
+        }
         st.source_match = std::move(*m);
         st.target_match = std::move(matches[0]);
         st.target_steps = {st.target};
@@ -494,8 +323,8 @@ private:
         return true;
     }
 
-    // Applies the source step, naming created parts after their generator in the rule or their
-    // object and the step (block@2).
+    // Applies the source step, naming a created part after its generator in the rule, or after
+    // its object and the step that created it (block@2).
     Result<ACSetMorphism> apply_source(std::size_t i, const rewrite::Rule& rule,
                                        const ACSetMorphism& m) {
         return x_->apply(rule, m, [&](ObId ob, Part q) {
@@ -521,54 +350,103 @@ private:
         }
         StepTransfer st;
         st.source = plan_.steps[i];
-        st.source_bindings = plan::describe_match(m, a.source->L, x_->state());
+        st.source_bindings = describe_bindings(m, a.source->L, x_->state());
+        if (!matches.empty() && comparing()) {
+            check_->before(m, *x_, matches[0], *y_);
+        }
         auto r_to_x = apply_source(i, *a.source, m);
         CATPLAN_ASSERT(r_to_x, "a valid source match failed to apply");
         if (!matches.empty()) {
-            ACSetMorphism mt = transport(matches[0], *c);
-            st.kind = StepTransfer::Kind::Corresponds;
-            st.target = step_of(*c->target, mt, y_->state());
-            st.target_bindings = plan::describe_match(mt, c->target->L, y_->state());
-            auto applied = y_->apply(*c->target, mt, [&](ObId ob, Part q) {
-                const auto& origin = a.r_origins[ob.index()];
-                Part qg = generated_part(*c, ob, q);
-                if (!origin || qg >= origin->parts.size()) {
-                    return y_->fresh_name(ob, lowercase(f_.target()->ob(ob).name));
-                }
-                Part in_x = r_to_x->components[origin->ob.index()][origin->parts[qg]];
-                return renamed(renaming_, x_->state().part_name(origin->ob, in_x));
-            });
-            CATPLAN_ASSERT(applied, "a corresponding action applies where its generated one does");
-            st.target_steps = {st.target};
-            st.source_match = std::move(m);
-            st.target_match = std::move(mt);
-        } else {
-            ACSet subgoal = migrate::migrate(f_, x_->state());
-            rename_parts(subgoal, renaming_);
-            auto repair = repair_step(own.domain, y_->state(), subgoal, options_.repair);
-            if (!repair.found) {
-                return fail_at(i, fmt::format("{}; repair: {}",
-                                              c == nullptr ? "no target action corresponds"
-                                                           : "the corresponding action has no "
-                                                             "match in the target",
-                                              repair.why));
-            }
-            for (const auto& step : repair.steps) {
-                const auto* rule = own.domain->find_rule(step.action);
-                auto mt = plan::resolve_step(*rule, y_->state(), step);
-                CATPLAN_ASSERT(mt, "a repair's step applies");
-                auto applied = y_->apply(*rule, *mt, [&](ObId ob, Part) {
-                    return y_->fresh_name(ob, lowercase(f_.target()->ob(ob).name));
-                });
-                CATPLAN_ASSERT(applied, "a repair's step applies");
-            }
-            st.kind = StepTransfer::Kind::Repaired;
-            st.target_steps = std::move(repair.steps);
-            st.repair_stats = repair.stats;
-            st.source_match = std::move(m);
+            corresponding_step(i, a, *c, matches[0], *r_to_x, st);
+        } else if (!repaired_step(i, c, st)) {
+            return false;
         }
+        if (options_.follow_source) {
+            follow_source();
+        }
+        st.source_match = std::move(m);
         out_.steps.push_back(std::move(st));
         return true;
+    }
+
+    // The target action c corresponds to, at the generated action's match mg; a part it creates
+    // is named as the generated action would name it.
+    void corresponding_step(std::size_t i, const ActionPair& a, const Correspondence& c,
+                            const ACSetMorphism& mg, const ACSetMorphism& r_to_x,
+                            StepTransfer& st) {
+        ACSetMorphism mt = transport(mg, c);
+        st.kind = StepTransfer::Kind::Corresponds;
+        st.target = step_of(*c.target, mt, y_->state());
+        st.target_bindings = describe_bindings(mt, c.target->L, y_->state());
+        auto applied = y_->apply(*c.target, mt, [&](ObId ob, Part q) {
+            const auto& origin = a.r_origins[ob.index()];
+            Part qg = generated_part(c, ob, q);
+            if (!origin || qg >= origin->parts.size()) {
+                return y_->fresh_name(ob, lowercase(f_.target()->ob(ob).name));
+            }
+            Part in_x = r_to_x.components[origin->ob.index()][origin->parts[qg]];
+            return renamed(renaming_, x_->state().part_name(origin->ob, in_x));
+        });
+        CATPLAN_ASSERT(applied, "a corresponding action applies where its generated one does");
+        if (comparing()) {
+            // The generated action's comatch is the target action's after φ_R.
+            if (auto d = check_->after(i, r_to_x, *x_, hom::compose(c.r_iso, *applied), *y_)) {
+                d->where = where(i);
+                out_.verdict.divergences.push_back(std::move(*d));
+            }
+        }
+        st.target_steps = {st.target};
+        st.target_match = std::move(mt);
+    }
+
+    // A repair: the target's own actions from Y_{i-1} to a state that holds Δ_F(X_i).
+    bool repaired_step(std::size_t i, const Correspondence* c, StepTransfer& st) {
+        const auto& own = *options_.target_actions;
+        ACSet subgoal = migrate::migrate(f_, x_->state());
+        rename_parts(subgoal, renaming_);
+        auto repair = repair_step(own.domain, y_->state(), subgoal, options_.repair);
+        if (!repair.found) {
+            return fail_at(i, fmt::format("{}; repair: {}",
+                                          c == nullptr ? "no target action corresponds"
+                                                       : "the corresponding action has no "
+                                                         "match in the target",
+                                          repair.why));
+        }
+        for (const auto& step : repair.steps) {
+            const auto* rule = own.domain->find_rule(step.action);
+            auto mt = plan::resolve_step(*rule, y_->state(), step);
+            CATPLAN_ASSERT(mt, "a repair's step applies");
+            auto applied = y_->apply(*rule, *mt, [&](ObId ob, Part) {
+                return y_->fresh_name(ob, lowercase(f_.target()->ob(ob).name));
+            });
+            CATPLAN_ASSERT(applied, "a repair's step applies");
+        }
+        if (comparing()) {
+            // The repair reaches a state that holds Δ_F(X_i); whether it is Δ_F(X_i) is checked.
+            if (auto d = check_->compare(i, *x_, *y_)) {
+                d->where = where(i);
+                out_.verdict.divergences.push_back(std::move(*d));
+            }
+        }
+        st.kind = StepTransfer::Kind::Repaired;
+        st.target_steps = std::move(repair.steps);
+        st.repair_stats = repair.stats;
+        return true;
+    }
+
+    // Whether this step's target state is compared with Δ_F of the source state: every step
+    // when following the source, else until the first divergence (the later target states are
+    // not comparable with the source's).
+    bool comparing() const {
+        return check_ && (options_.follow_source || out_.verdict.divergences.empty());
+    }
+
+    // Y_i := Δ_F(X_i), named as Y_0 was.
+    void follow_source() {
+        ACSet z = migrate::migrate(f_, x_->state());
+        rename_parts(z, renaming_);
+        y_.emplace(std::move(z));
+        check_->reset();
     }
 
     std::string migration_failure(const std::string& action) const {
@@ -622,23 +500,84 @@ private:
     TransferResult& out_;
     Renaming renaming_;
     std::optional<NamedState> x_, y_;
+    std::optional<DivergenceCheck> check_;
     std::map<std::string, ActionPair, std::less<>> actions_;
 };
 
-// The claim of Appendix A: a delta map preserves pushouts, so each migrated DPO step applies
-// and Y_i = Δ_F(X_i). A target action with the same span as the migrated one is the same step; a
-// repair is not.
-Claim valid_by_construction(MigrationKind migration, const std::vector<StepTransfer>& steps) {
+// What makes f conjunctive, named: the first target object sent to a query, hom sent to a
+// query's variable or attribute sent to a value.
+std::string not_delta(const SchemaMap& f) {
+    const auto& t = *f.target();
+    for (std::uint32_t c = 0; c < t.num_obs(); ++c) {
+        if (!f.query(ObId(c)).is_plain()) {
+            return fmt::format("it sends {} to a query", t.ob(ObId(c)).name);
+        }
+    }
+    for (std::uint32_t h = 0; h < t.num_homs(); ++h) {
+        if (!f.hom_image(HomId(h)).path) {
+            return fmt::format("it sends {} to a variable of a query", t.hom(HomId(h)).name);
+        }
+    }
+    for (std::uint32_t a = 0; a < t.num_attrs(); ++a) {
+        if (f.attr_image(AttrId(a)).kind == migrate::AttrImage::Kind::Value) {
+            return fmt::format("it sends {} to a computed value", t.attr(AttrId(a)).name);
+        }
+    }
+    return "it is not a delta map";
+}
+
+// The claim of Appendix A and its hypotheses: Δ_F preserves pushouts for a delta map, so each
+// migrated DPO step at a monic match applies and Y_i = Δ_F(X_i), and the goal of a valid source
+// plan embeds. An application condition is not preserved (Δ_F is not full: the migrated NAC may
+// see less than the source NAC), nor is SPO's deletion of dangling parts.
+Claim valid_by_construction(const SchemaMap& f, const TransferResult& out,
+                            const plan::Problem& problem, const plan::Plan& plan) {
     Claim c;
     c.kind = Claim::Kind::ValidByConstruction;
+    bool delta = out.migration == MigrationKind::Delta;
     c.hypotheses.push_back(
-        {"F is a delta map (Δ_F preserves pushouts)", migration == MigrationKind::Delta});
-    c.hypotheses.push_back(
-        {"every step is carried out by its migrated action or one with the same span (none is "
-         "repaired)",
-         std::none_of(steps.begin(), steps.end(), [](const StepTransfer& s) {
-             return s.kind == StepTransfer::Kind::Repaired;
-         })});
+        {"F is a delta map (Δ_F preserves pushouts)", delta, delta ? "" : not_delta(f)});
+    std::string conditions, spo;
+    for (const auto& step : plan.steps) {
+        const auto* rule = problem.domain->find_rule(step.action);
+        if (rule == nullptr) {
+            continue;
+        }
+        if (conditions.empty() && !rule->conditions.empty()) {
+            conditions = fmt::format("rule {} has a {} application condition", rule->name,
+                                     rule->conditions.front().negative ? "negative" : "positive");
+        }
+        if (spo.empty() && rule->semantics == rewrite::Semantics::SPO) {
+            spo = fmt::format("rule {} deletes dangling parts (SPO)", rule->name);
+        }
+    }
+    c.hypotheses.push_back({"no rule the plan uses has an application condition (Δ_F does not "
+                            "preserve them)",
+                            conditions.empty(), conditions});
+    c.hypotheses.push_back({"every rule the plan uses is a DPO rule", spo.empty(), spo});
+    std::string not_monic;
+    for (std::size_t i = 0; i < out.steps.size() && not_monic.empty(); ++i) {
+        for (auto component : out.steps[i].source_match.components) {
+            std::sort(component.begin(), component.end());
+            if (std::adjacent_find(component.begin(), component.end()) != component.end()) {
+                not_monic = fmt::format("the match of step {} identifies parts", i + 1);
+            }
+        }
+    }
+    c.hypotheses.push_back({"every match is monic", not_monic.empty(), not_monic});
+    // A target action with the same span as the migrated one is the same step; a repair is not.
+    std::string repaired;
+    for (std::size_t i = 0; i < out.steps.size() && repaired.empty(); ++i) {
+        if (out.steps[i].kind == StepTransfer::Kind::Repaired) {
+            repaired = fmt::format("step {} is repaired with the target's own actions", i + 1);
+        }
+    }
+    c.hypotheses.push_back({"every step is carried out by its migrated action or one with the "
+                            "same span (none is repaired)",
+                            repaired.empty(), repaired});
+    const Fault* source = out.verdict.find(Fault::Kind::SourcePlan);
+    c.hypotheses.push_back({"the source plan is valid", source == nullptr,
+                            source ? headline(*source) : std::string()});
     return c;
 }
 
@@ -648,6 +587,14 @@ void judge(TransferResult& out, const ACSet& y, std::optional<Fault> source,
            const TransferOptions& options) {
     auto t0 = Clock::now();
     Verdict& v = out.verdict;
+    v.trajectory = options.follow_source ? Trajectory::FollowSource : Trajectory::Own;
+    if (options.strict) {
+        for (const auto& d : v.divergences) {
+            v.faults.push_back(
+                {Fault::Kind::Divergence, d.step, d.where,
+                 fmt::format("the target state is not Δ_F(X{}): {}", d.step + 1, d.difference())});
+        }
+    }
     auto embedding = plan::embed_goal(*out.target_goal, y);
     if (!embedding) {
         v.faults.push_back(
@@ -674,7 +621,6 @@ void judge(TransferResult& out, const ACSet& y, std::optional<Fault> source,
         v.goal = goal_satisfaction(*out.target_goal, y);
     }
     v.status = v.faults.empty() ? Verdict::Status::Valid : Verdict::Status::Invalid;
-    v.claims = {valid_by_construction(out.migration, out.steps)};
     out.timings.validate_ms = ms_since(t0);
 }
 
@@ -710,6 +656,7 @@ TransferResult transfer_plan(const SchemaMap& f, const plan::Problem& problem,
     out.migration = f.is_delta() ? MigrationKind::Delta : MigrationKind::Conjunctive;
     auto source = Transfer(f, problem, plan, options, out).run();
     judge(out, *out.final_state, std::move(source), options);
+    out.verdict.claims = {valid_by_construction(f, out, problem, plan)};
     out.timings.total_ms = ms_since(t0);
     return out;
 }
@@ -748,14 +695,6 @@ std::size_t edit_distance(const std::vector<plan::Step>& a, const std::vector<pl
     return row[b.size()];
 }
 
-long peak_rss_kib() {
-    rusage usage{};
-    if (getrusage(RUSAGE_SELF, &usage) != 0) {
-        return 0;
-    }
-    return usage.ru_maxrss;
-}
-
 Replan replan(const TransferResult& t, const plan::SearchOptions& options) {
     CATPLAN_ASSERT(t.target_domain.domain && t.target_initial && t.target_goal,
                    "replan needs a transfer's target problem");
@@ -777,6 +716,21 @@ Replan replan(const TransferResult& t, const plan::SearchOptions& options) {
     }
     out.edit_distance = edit_distance(target_plan(t.steps), out.steps);
     return out;
+}
+
+bool hit_limit(const Replan& r) {
+    auto st = r.search.status;
+    return st == plan::SearchStatus::NodeLimit || st == plan::SearchStatus::TimeLimit ||
+           st == plan::SearchStatus::MemoryLimit;
+}
+
+std::string speedup_text(const Replan& r, double transfer_ms) {
+    double ratio = r.ms / std::max(transfer_ms, 1e-6);
+    if (hit_limit(r)) {
+        return fmt::format("> {:.0f}x (replanning hit its {})", ratio,
+                           plan::to_string(r.search.status));
+    }
+    return fmt::format("{:.0f}x", ratio);
 }
 
 } // namespace catplan::transfer

@@ -15,18 +15,27 @@
 //      match exists the transfer stops at that step and says which part of the precondition
 //      is missing. Name indexes are kept in step with each rewrite, so a step costs what it
 //      touches.
+//   2b. after each step, Y_i is compared with Δ_F(X_i) up to isomorphism (divergence.hpp: a
+//      local check that costs what the step touches, the whole states only when it cannot
+//      decide); the first step after which they differ is reported with what differs. With
+//      follow_source, Y_i := Δ_F(X_i) after every step instead, and every step is checked to
+//      reach it.
 //   3. the goal is checked with a monic morphism Δ_F(G) -> Y_n and, when the caller states the
 //      goal intended in the target domain (TransferOptions::goal), that goal too; goal
 //      satisfaction (the paper's Metric 1, goal.hpp) is computed for the goal judged by.
-// The outcome is one Verdict (verdict.hpp): valid or not, every fault, the goal's figure, and
-// the claims with their hypotheses. For a delta map, Δ_F preserves pushouts, so the transferred
-// plan is valid by construction (paper Appendix A); it is still checked.
+// The outcome is one Verdict (verdict.hpp): valid or not, every fault, the goal's figure, the
+// divergences, and the claims with their hypotheses. For a delta map and DPO rules without
+// application conditions, matched monically, Δ_F preserves pushouts, so the transferred plan of
+// a valid source plan is valid by construction (paper Appendix A); it is still checked, and the
+// claim is made only when every hypothesis holds (a NAC that sees what the map forgets breaks
+// it).
 //
 //   auto t = transfer_plan(map, *problem, plan);
 //   for (const auto& s : t.steps) std::cout << s.target.to_string() << "\n";
 //   if (!t.verdict.valid()) std::cout << t.verdict.reason() << "\n";
 
 #include "catplan/acset/acset.hpp"
+#include "catplan/base/process.hpp"
 #include "catplan/hom/morphism.hpp"
 #include "catplan/migrate/schema_map.hpp"
 #include "catplan/plan/domain.hpp"
@@ -78,6 +87,14 @@ struct TransferOptions {
     /// The intended goal's name, for the verdict's words ("the intended goal Sandwich is not
     /// satisfied").
     std::string goal_name;
+    /// Compare every target state with Δ_F of the source state (on by default: off only to
+    /// measure what the comparison costs).
+    bool check_divergence = true;
+    /// A divergence makes the transfer invalid (Fault::Kind::Divergence), not only a caveat.
+    bool strict = false;
+    /// State by state: Y_i := Δ_F(X_i) after every step (names carried), each migrated step
+    /// checked to reach it. Costs the size of the state per step.
+    bool follow_source = false;
     /// The target domain's own actions (correspond.hpp): each step is carried out by the target
     /// action its generated action corresponds to, else repaired (repair.hpp). Null to carry
     /// out the generated actions.
@@ -131,6 +148,8 @@ struct TransferResult {
     /// The last target state reached.
     std::optional<ACSet> final_state;
     Timings timings;
+    /// How many steps the divergence check compared as whole states (divergence.hpp).
+    std::size_t whole_comparisons = 0;
 };
 
 /// Transfers plan, a plan of problem (on F's source schema), along F; every outcome is data.
@@ -159,11 +178,18 @@ struct Replan {
 /// Δ_F(G)) and compares the plan found with the transferred one.
 Replan replan(const TransferResult& t, const plan::SearchOptions& options);
 
+/// Whether replanning stopped at a limit (node, time, memory) rather than finishing.
+bool hit_limit(const Replan& r);
+
+/// Replanning time over transfer time: "12x", or "> 12x (replanning hit its time limit)" when
+/// replanning stopped at a limit, so the figure is a lower bound.
+std::string speedup_text(const Replan& r, double transfer_ms);
+
 /// The edit distance between two step lists (insertions, deletions, substitutions of whole
 /// steps).
 std::size_t edit_distance(const std::vector<plan::Step>& a, const std::vector<plan::Step>& b);
 
-/// The process's peak resident memory in KiB (0 when unknown).
-long peak_rss_kib();
+/// The process's peak resident memory in KiB (0 when unknown); base/process.hpp.
+using catplan::peak_rss_kib;
 
 } // namespace catplan::transfer

@@ -336,8 +336,154 @@ TEST(Transfer, ValidByConstructionIsClaimedOnlyForADeltaMap) {
     EXPECT_FALSE(c.holds());
     ASSERT_NE(c.failing(), nullptr);
     EXPECT_EQ(c.failing()->statement, "F is a delta map (Δ_F preserves pushouts)");
+    EXPECT_EQ(c.failing()->why_not, "it sends BreadSliced to a query");
     // The claim is about the method, not the outcome: the conjunctive transfer is still valid.
     EXPECT_TRUE(conjunctive.verdict.valid());
+}
+
+// paint_red(b) makes block b red; with `test_purple` its Pre requires b to be purple.
+std::shared_ptr<rewrite::Rule> paint_red_rule(const Stacks& t, bool test_purple) {
+    auto rule = std::make_shared<rewrite::Rule>(t.s);
+    rule->name = "paint_red";
+    for (ACSet* x : {&rule->L, &rule->K, &rule->R}) {
+        x->add_part(t.block, "b");
+    }
+    rule->K.set_subpart(t.color, 0, rule->K.add_var(t.color_type));
+    rule->L.set_subpart(t.color, 0,
+                        test_purple ? Value::string("purple") : rule->L.add_var(t.color_type));
+    rule->R.set_subpart(t.color, 0, Value::string("red"));
+    rule->l = hom::identity(rule->K);
+    rule->l.var_components[t.color_type.index()] = {rule->L.subpart(t.color, 0)};
+    rule->r = hom::identity(rule->K);
+    rule->r.var_components[t.color_type.index()] = {Value::string("red")};
+    rule->parameters = {{"b", t.block, 0}};
+    EXPECT_TRUE(rewrite::check_rule(*rule).empty());
+    return rule;
+}
+
+// The fixture's problem with paint_red as its only action and no goal to speak of.
+plan::ProblemPtr painting(const Fixture& fx, rewrite::RulePtr rule) {
+    auto domain = std::make_shared<plan::Domain>();
+    domain->name = "Painting";
+    domain->schema = fx.t.s;
+    domain->rules = {std::move(rule)};
+    auto p = std::make_shared<plan::Problem>(*fx.problem);
+    p->domain = domain;
+    p->goal = std::make_shared<ACSet>(fx.t.s);
+    return p;
+}
+
+TEST(Transfer, ADivergentTrajectoryIsReportedWithWhatDiffers) {
+    // The purple blocks are bread. paint_red(A) does not test A's colour, so its migration
+    // cannot see that A stops being bread: the target keeps A's slice, Δ_F(X1) has none.
+    Fixture fx;
+    Kitchen k = kitchen();
+    SchemaMap f = kitchen_map(fx.t, k);
+    plan::Plan plan;
+    plan.steps = {{"paint_red", {"A"}, {}}, {"paint_red", {"C"}, {}}};
+    auto r = transfer_plan(f, *painting(fx, paint_red_rule(fx.t, false)), plan);
+    const Verdict& v = r.verdict;
+    ASSERT_EQ(r.steps.size(), 2u);
+    ASSERT_NE(v.diverged(), nullptr);
+    EXPECT_EQ(v.divergences.size(), 1u); // the later states are not compared
+    EXPECT_EQ(v.diverged()->step, 0u);
+    EXPECT_EQ(v.diverged()->where, "step 1 paint_red(A)");
+    EXPECT_EQ(v.diverged()->only_in_target,
+              (std::vector<std::string>{"BreadSliced A", "breadIsItem(A) == A"}));
+    EXPECT_TRUE(v.diverged()->only_in_migrated.empty());
+    // Not a fault by default, but never called valid without saying so.
+    EXPECT_TRUE(v.valid()) << v.reason();
+    EXPECT_NE(v.summary().find("not the migration of the source plan"), std::string::npos)
+        << v.summary();
+    EXPECT_NE(v.summary().find("after step 1 paint_red(A)"), std::string::npos) << v.summary();
+
+    TransferOptions strict;
+    strict.strict = true;
+    auto s = transfer_plan(f, *painting(fx, paint_red_rule(fx.t, false)), plan, strict);
+    EXPECT_FALSE(s.verdict.valid());
+    ASSERT_FALSE(s.verdict.faults.empty());
+    EXPECT_EQ(s.verdict.faults[0].kind, Fault::Kind::Divergence);
+    EXPECT_EQ(s.verdict.failed_step(), nullptr);
+    EXPECT_EQ(s.verdict.reason(), "step 1 paint_red(A): the target state is not Δ_F(X1): it has "
+                                  "BreadSliced A and breadIsItem(A) == A, which Δ_F(X1) has not");
+}
+
+TEST(Transfer, FollowingTheSourceTakesTheMigratedStatesAndChecksEachStep) {
+    Fixture fx;
+    Kitchen k = kitchen();
+    SchemaMap f = kitchen_map(fx.t, k);
+    plan::Plan plan;
+    plan.steps = {{"paint_red", {"A"}, {}}, {"paint_red", {"C"}, {}}};
+    TransferOptions opt;
+    opt.follow_source = true;
+    opt.keep_states = true;
+    auto r = transfer_plan(f, *painting(fx, paint_red_rule(fx.t, false)), plan, opt);
+    const Verdict& v = r.verdict;
+    EXPECT_EQ(v.trajectory, Trajectory::FollowSource);
+    // Both steps leave a stale slice behind; each target state is then Δ_F(X_i).
+    ASSERT_EQ(v.divergences.size(), 2u);
+    EXPECT_EQ(v.divergences[1].where, "step 2 paint_red(C)");
+    ASSERT_TRUE(r.final_state);
+    EXPECT_EQ(r.final_state->num_parts(k.bread), 0u);
+    EXPECT_TRUE(hom::is_isomorphic(*r.final_state, migrate::migrate(f, r.source_states.back())));
+    EXPECT_NE(v.summary().find("2 target step(s) do not reach"), std::string::npos) << v.summary();
+}
+
+TEST(Transfer, ARuleThatTestsWhatItChangesDoesNotDiverge) {
+    // With Pre testing purple, the migrated step deletes A's slice: Y_i = Δ_F(X_i), and the
+    // local check decides it without comparing the whole states.
+    Fixture fx;
+    Kitchen k = kitchen();
+    plan::Plan plan;
+    plan.steps = {{"paint_red", {"A"}, {}}, {"paint_red", {"C"}, {}}};
+    auto r = transfer_plan(kitchen_map(fx.t, k), *painting(fx, paint_red_rule(fx.t, true)), plan);
+    ASSERT_TRUE(r.verdict.valid()) << r.verdict.reason();
+    EXPECT_EQ(r.verdict.diverged(), nullptr);
+    EXPECT_EQ(r.whole_comparisons, 0u);
+    EXPECT_EQ(r.final_state->num_parts(k.bread), 0u);
+    EXPECT_EQ(r.verdict.summary(), "valid: every step applies and the goal embeds monically");
+}
+
+TEST(Transfer, ADeltaMapNeverDiverges) {
+    Fixture fx;
+    auto r = transfer_plan(renaming_map(fx.t, true), *fx.problem, fx.plan);
+    ASSERT_TRUE(r.verdict.valid()) << r.verdict.reason();
+    EXPECT_EQ(r.verdict.diverged(), nullptr);
+    EXPECT_EQ(r.whole_comparisons, 0u);
+}
+
+TEST(Transfer, ANegativeConditionTheMapCannotSeeBreaksTheClaim) {
+    // A delta map that forgets On, and paint_red(b) unless b stands on something: the migrated
+    // NAC is Δ_F(N) = Δ_F(L), which rejects every match.
+    Fixture fx;
+    auto s = std::make_shared<Schema>("Colors");
+    ObId thing = s->add_ob("Thing");
+    AttrTypeId paint = s->add_attr_type("Paint", ValueKind::String);
+    AttrId painted = s->add_attr("painted", thing, paint);
+    SchemaMap f(s, fx.t.s);
+    f.map_ob(thing, Query::representable(fx.t.s, fx.t.block, "x"));
+    f.map_attr_type(paint, fx.t.color_type);
+    f.map_attr(painted, Term::path("x", {}, fx.t.color));
+    ASSERT_TRUE(f.finish().empty());
+    ASSERT_TRUE(f.is_delta());
+    auto rule = paint_red_rule(fx.t, false);
+    rewrite::ApplicationCondition nac{"NAC 1", true, rule->L, hom::identity(rule->L), {}};
+    Part o = nac.n_state.add_part(fx.t.on, "o");
+    nac.n_state.set_subpart(fx.t.on_l, o, 0);
+    nac.n_state.add_part(fx.t.block, "below");
+    nac.n_state.set_subpart(fx.t.on_r, o, 1);
+    rule->conditions.push_back(std::move(nac));
+    ASSERT_TRUE(rewrite::check_rule(*rule).empty());
+    plan::Plan plan;
+    plan.steps = {{"paint_red", {"C"}, {}}}; // C stands on nothing
+    auto r = transfer_plan(f, *painting(fx, rule), plan);
+    EXPECT_TRUE(r.verdict.source_valid());
+    EXPECT_FALSE(r.verdict.valid());
+    ASSERT_NE(r.verdict.failed_step(), nullptr);
+    const Claim& c = r.verdict.claim(Claim::Kind::ValidByConstruction);
+    EXPECT_FALSE(c.holds());
+    ASSERT_NE(c.failing(), nullptr);
+    EXPECT_EQ(c.failing()->why_not, "rule paint_red has a negative application condition");
 }
 
 TEST(Transfer, ReplanFindsAPlanAndMeasuresTheEditDistance) {
@@ -362,6 +508,17 @@ TEST(Transfer, CollapsedArgumentsShowPartsThatDisagree) {
     EXPECT_EQ(collapse_arguments(rule, agree).to_string(), "stack(B, D)");
     plan::Step mixed{"stack", {"B", "A", "A", "D"}, {}};
     EXPECT_EQ(collapse_arguments(rule, mixed).to_string(), "stack(B|A, A|D)");
+}
+
+TEST(Transfer, ASpeedupAgainstACutOffSearchIsALowerBound) {
+    Replan r;
+    r.ms = 1000;
+    r.search.status = plan::SearchStatus::Solved;
+    EXPECT_FALSE(hit_limit(r));
+    EXPECT_EQ(speedup_text(r, 10), "100x");
+    r.search.status = plan::SearchStatus::TimeLimit;
+    EXPECT_TRUE(hit_limit(r));
+    EXPECT_EQ(speedup_text(r, 10), "> 100x (replanning hit its time limit)");
 }
 
 TEST(Transfer, EditDistanceCountsWholeSteps) {

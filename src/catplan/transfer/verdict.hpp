@@ -4,13 +4,16 @@
 // paper's Metric 1, and the claims the transfer makes, each with the hypotheses of the theorem it
 // rests on.
 //
-// The faults are kept in the order the transfer meets them, and the first one is the verdict's
-// reason: the step the replay stopped at (a source step that does not apply, or a migrated step
-// that does not apply in the target), then Δ_F(G) not embedding monically in the last target
-// state, then the source plan being invalid on its own, then the intended goal (the one stated in
-// the target domain, TransferOptions::goal) not being satisfied. A new way for a transfer to go
-// wrong is a new Fault::Kind; a claim whose theorem needs more hypotheses gets more Hypothesis
-// entries, and the first one that fails is the one to name.
+// The faults are kept in this order, and the first one is the verdict's reason: the step the
+// replay stopped at (a source step that does not apply, or a migrated step that does not apply in
+// the target), then, with TransferOptions::strict, each step after which the target state is not
+// Δ_F of the source state (semantics.md, 3b), then Δ_F(G) not embedding monically in the last
+// target state, then the source plan being invalid on its own, then the intended goal (the one
+// stated in the target domain, TransferOptions::goal) not being satisfied. Without strict a
+// divergence is not a fault, but the verdict carries it (divergences) and every sentence about
+// the verdict says so: a transfer whose trajectory diverges is never called valid without it.
+// A new way for a transfer to go wrong is a new Fault::Kind; a claim whose theorem needs more
+// hypotheses gets more Hypothesis entries, and the first one that fails is the one to name.
 //
 //   auto t = transfer_plan(map, *problem, plan);
 //   const Verdict& v = t.verdict;
@@ -33,6 +36,7 @@ struct Fault {
         Step,         ///< a step of the source plan applies, but its migration does not
         Goal,         ///< Δ_F(G) does not embed monically in the last target state
         IntendedGoal, ///< the intended goal is not fully satisfied in the last target state
+        Divergence,   ///< (strict) after a step, the target state is not Δ_F of the source's
     };
     Kind kind = Kind::Step;
     /// The step it is about (0-based), when it is about one.
@@ -46,16 +50,47 @@ struct Fault {
     std::string to_string() const;
 };
 
+/// Where the target trajectory stops being the migration of the source's: after step `step`,
+/// Y_i and Δ_F(X_i) are not isomorphic. What differs is named in the words of goal statements
+/// (terms.hpp): `Linen l1` is in the target state and not in Δ_F(X_1).
+struct Divergence {
+    std::size_t step = 0; ///< 0-based: the states after this step differ
+    std::string where;    ///< "step 1 relabel(l1)"
+    /// Statements of the target state Y_i that Δ_F(X_i) does not make, and the other way round
+    /// (at most kMaxListed in all; `more` counts the rest).
+    std::vector<std::string> only_in_target, only_in_migrated;
+    std::size_t more = 0;
+
+    static constexpr std::size_t kMaxListed = 12;
+
+    /// "it has Linen l1, which Δ_F(X1) has not" (and "Δ_F(X1) has ..., which it has not").
+    std::string difference() const;
+
+    /// "the target state after step 1 relabel(l1) is not Δ_F(X1): " + difference().
+    std::string to_string() const;
+};
+
+/// How the target states are taken (TransferOptions::follow_source).
+enum class Trajectory {
+    Own,          ///< Y_i is the migrated step applied to Y_{i-1} (Algorithm 1)
+    FollowSource, ///< Y_i := Δ_F(X_i); each migrated step is checked to reach it
+};
+
 /// A hypothesis of a theorem and whether it holds for this transfer.
 struct Hypothesis {
     std::string statement; ///< "F is a delta map (Δ_F preserves pushouts)"
     bool holds = false;
+    /// When it does not hold, why, naming what breaks it ("rule pickup has a negative
+    /// application condition").
+    std::string why_not;
 };
 
 /// A guarantee the transfer can give, claimed only when every hypothesis of its theorem holds.
 struct Claim {
     enum class Kind {
-        /// Every migrated step applies and Y_i = Δ_F(X_i), without search (paper Appendix A).
+        /// Every migrated step applies and Y_i = Δ_F(X_i), without search (paper Appendix A):
+        /// F is a delta map, every rule the plan uses is a DPO rule without application
+        /// conditions, every match is monic, and the source plan is valid.
         ValidByConstruction,
     };
     Kind kind = Kind::ValidByConstruction;
@@ -83,12 +118,26 @@ struct Verdict {
     std::string goal_name;
     /// The claims the transfer can make, one per Claim::Kind, with their hypotheses.
     std::vector<Claim> claims;
+    /// The steps after which the target state is not Δ_F of the source state: the first one
+    /// (Trajectory::Own: the later states are not compared), or each one (FollowSource).
+    std::vector<Divergence> divergences;
+    Trajectory trajectory = Trajectory::Own;
 
     bool valid() const { return status == Status::Valid; }
+
+    /// The first divergence, or nullptr when the target states are the migrated source states.
+    const Divergence* diverged() const {
+        return divergences.empty() ? nullptr : &divergences.front();
+    }
 
     /// Why the transfer is invalid, in one sentence ("" when valid): the first fault,
     /// "the source plan is invalid: step 2 ...", "goal not reached: ...".
     std::string reason() const;
+
+    /// The verdict in one line: "valid: every step applies and the goal embeds monically",
+    /// "valid in the target domain, but not the migration of the source plan: the target states
+    /// diverge from Δ_F of the source states after step 1 relabel(l1)", "invalid: <reason>".
+    std::string summary() const;
 
     /// The first fault of a kind, or nullptr.
     const Fault* find(Fault::Kind kind) const;

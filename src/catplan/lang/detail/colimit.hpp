@@ -2,14 +2,15 @@
 // A presentation written in the language (generators `x::Block`, equations `f(x) == y`,
 // `a(x) == "red"`) turned into a state by congruence closure: the colimit of its generators and
 // equations. @acset_colim builds a free instance from it (undefined homs get new parts, undefined
-// attributes new variables); rule blocks build partial states (undefined cells stay unset).
+// attributes new variables); rule blocks build partial states (undefined cells stay unset). This
+// class reads the language and words its errors; the engine is colimit::Presentation.
 //
 // Each operation that can find bad input reports it to the sink it is given: a rule elaborates
 // some blocks twice (Pre into L and into each condition) and reports each error only once.
 
 #include "catplan/acset/acset.hpp"
 #include "catplan/base/diagnostic.hpp"
-#include "catplan/base/union_find.hpp"
+#include "catplan/colimit/presentation.hpp"
 #include "catplan/lang/detail/elaborator.hpp"
 #include "catplan/lang/syntax.hpp"
 #include "catplan/schema/schema.hpp"
@@ -35,9 +36,9 @@ struct Term {
 class Colimit {
 public:
     /// An empty presentation on s; `inferred` (may be null) locates kinds inferred from literals.
-    Colimit(const schema::Schema& s, const InferredKinds* inferred);
+    Colimit(std::shared_ptr<const schema::Schema> s, const InferredKinds* inferred);
 
-    const schema::Schema& schema() const { return s_; }
+    const schema::Schema& schema() const { return p_.schema(); }
 
     /// Declares the generators of `x::T` or `(x, y)::T` (T an object or an attribute type).
     void declare(const Expr& st, DiagnosticSink& sink);
@@ -65,64 +66,38 @@ public:
     /// The generators' names in declaration order.
     const std::vector<std::string>& generator_names() const { return gen_order_; }
 
-    ObId part_ob(std::uint32_t node) const { return parts_[node].ob; }
+    ObId part_ob(std::uint32_t node) const { return p_.part_ob(node); }
 
-    AttrTypeId value_type(std::uint32_t node) const { return values_[node].type; }
+    AttrTypeId value_type(std::uint32_t node) const { return p_.value_type(node); }
 
     /// A partial presentation (rules): undefined homs and attributes stay unset.
-    acset::ACSet build_partial(std::shared_ptr<schema::Schema> schema);
+    acset::ACSet build_partial();
 
     /// A free presentation (instances): after completion every hom and attribute is defined, so
     /// building it partially gives the whole state.
-    acset::ACSet build(std::shared_ptr<schema::Schema> schema) {
-        return build_partial(std::move(schema));
-    }
+    acset::ACSet build() { return build_partial(); }
 
     /// After a build: the part or value a node became.
-    Part built_part(std::uint32_t node) { return built_parts_[parts_uf_.find(node)]; }
+    Part built_part(std::uint32_t node) const { return built_->part_of[node]; }
 
-    acset::Value built_value(std::uint32_t node) { return built_values_[values_uf_.find(node)]; }
+    acset::Value built_value(std::uint32_t node) const { return built_->value_of[node]; }
 
 private:
-    static constexpr std::uint32_t kNone = UINT32_MAX;
-
-    struct PartNode {
-        ObId ob;
-        std::vector<std::uint32_t> homs;  // by position in homs_from(ob); kNone if undefined
-        std::vector<std::uint32_t> attrs; // value nodes, by position in attrs_from(ob)
-    };
-
-    struct ValueNode {
-        AttrTypeId type;
-        std::optional<acset::Value> literal;
-        SourceRange literal_range;
-    };
-
     struct Gen {
         Term term;
         SourceRange range;
     };
 
-    std::uint32_t new_part(ObId x, std::string name);
-    std::uint32_t new_value(AttrTypeId t, std::string name);
-    void set_literal(std::uint32_t v, acset::Value value, SourceRange lit, SourceRange at,
-                     DiagnosticSink& sink);
-    void close(SourceRange at, DiagnosticSink& sink);
+    Term resolved(Term t) const;
+    void report_problems(DiagnosticSink& sink);
 
-    const schema::Schema& s_;
     const InferredKinds* inferred_;
-    std::unordered_map<std::uint32_t, std::uint32_t> hom_slot_, attr_slot_;
-    std::vector<PartNode> parts_;
-    std::vector<std::string> part_names_;
-    std::vector<ValueNode> values_;
-    std::vector<std::string> value_names_;
-    UnionFind parts_uf_, values_uf_;
+    colimit::Presentation p_;
+    std::size_t problems_reported_ = 0; // the presentation's problems already reported
     std::unordered_map<std::string, Gen> gens_;
     std::vector<std::string> gen_order_;
     bool allow_redeclare_ = false;
-    std::vector<Part> built_parts_;
-    std::vector<acset::Value> built_values_;
-    std::vector<std::pair<std::uint32_t, std::uint32_t>> pending_parts_, pending_values_;
+    std::optional<colimit::Presentation::Instance> built_;
 };
 
 } // namespace catplan::lang::detail

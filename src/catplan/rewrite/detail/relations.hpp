@@ -19,8 +19,7 @@
 namespace catplan::rewrite::detail {
 
 /// Merges each part the rule created in one of its relations into an equal part of x (the
-/// created part is removed by pop-and-swap, r_to_x and origin follow); origin may be null.
-void merge_created_facts(const Rule& rule, acset::ACSet& x, hom::ACSetMorphism& r_to_x,
-                         std::vector<std::vector<Part>>* origin);
+/// created part is removed by pop-and-swap, and r_to_x follows).
+void merge_created_facts(const Rule& rule, acset::ACSet& x, hom::ACSetMorphism& r_to_x);
 
 } // namespace catplan::rewrite::detail

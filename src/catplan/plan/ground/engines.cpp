@@ -1,0 +1,333 @@
+// The search engines on ground tasks (space.hpp).
+
+#include "catplan/plan/ground/space.hpp"
+
+#include <algorithm>
+
+namespace catplan::plan::ground {
+
+namespace {
+
+// Entries by integer key, first in first out within a key; buckets grow in blocks (std::deque).
+template <class T>
+class BucketList {
+public:
+    void push(int key, const T& item) {
+        auto k = static_cast<std::size_t>(std::max(key, 0));
+        if (k >= buckets_.size()) {
+            buckets_.resize(k + 1);
+        }
+        buckets_[k].push_back(item);
+        min_ = std::min(min_, k);
+        ++size_;
+    }
+
+    bool empty() const { return size_ == 0; }
+
+    std::size_t size() const { return size_; }
+
+    /// The first item of the smallest key, and the key.
+    std::pair<T, int> pop() {
+        while (buckets_[min_].empty()) {
+            ++min_;
+        }
+        T item = buckets_[min_].front();
+        buckets_[min_].pop_front();
+        --size_;
+        return {item, static_cast<int>(min_)};
+    }
+
+private:
+    std::vector<std::deque<T>> buckets_;
+    std::size_t min_ = SIZE_MAX;
+    std::size_t size_ = 0;
+};
+
+// Evaluates a state with one evaluator, telling a path-dependent one how it was reached.
+int evaluate(Space& space, Evaluator& h, StateId parent, ActionId a, StateId s, bool is_new,
+             const std::vector<ActionId>* applicable, std::vector<ActionId>* preferred) {
+    const auto& values = space.values(s);
+    if (h.path_dependent()) {
+        h.reach(parent, a, s, values, is_new);
+    }
+    return h.evaluate(s, values, applicable, preferred);
+}
+
+} // namespace
+
+EngineResult breadth_first(Space& space) {
+    StateId root = space.initial();
+    if (space.is_goal(root)) {
+        return {SearchStatus::Solved, {}};
+    }
+    std::deque<StateId> open{root};
+    std::vector<ActionId> ops;
+    while (!open.empty()) {
+        if (auto stop = space.limit_reached()) {
+            return {*stop, {}};
+        }
+        StateId s = open.front();
+        open.pop_front();
+        ++space.stats.expanded;
+        space.stats.f = space.node(s).g;
+        space.applicable(s, ops);
+        for (ActionId a : ops) {
+            auto succ = space.successor(s, a);
+            if (!succ || !succ->is_new) {
+                continue;
+            }
+            Node& n = space.node(succ->id);
+            n = {s, a, space.node(s).g + 1, false, false};
+            if (space.is_goal(succ->id)) {
+                return {SearchStatus::Solved, space.path_to(succ->id)};
+            }
+            open.push_back(succ->id);
+        }
+        space.stats.frontier = open.size();
+    }
+    return {SearchStatus::Unsolvable, {}};
+}
+
+EngineResult eager_best_first(Space& space, Evaluator& h, bool astar) {
+    struct Entry {
+        StateId state;
+        int g;
+    };
+
+    // A*: the key is f, and within f, h (kept as f * (H + 1) + h would overflow; two levels).
+    std::vector<BucketList<Entry>> by_f; // A*: per f, buckets by h; greedy: one list by h
+    std::size_t min_f = SIZE_MAX, open_size = 0;
+    auto push = [&](StateId s, int g, int hv) {
+        auto f = static_cast<std::size_t>(astar ? g + hv : 0);
+        if (f >= by_f.size()) {
+            by_f.resize(f + 1);
+        }
+        by_f[f].push(hv, {s, g});
+        min_f = std::min(min_f, f);
+        ++open_size;
+    };
+    auto pop = [&]() {
+        while (by_f[min_f].empty()) {
+            ++min_f;
+        }
+        --open_size;
+        return by_f[min_f].pop();
+    };
+    std::vector<int> hval;
+    auto set_h = [&](StateId s, int v) {
+        if (hval.size() <= s) {
+            hval.resize(s + 1, 0);
+        }
+        hval[s] = v;
+    };
+    StateId root = space.initial();
+    int h0 = evaluate(space, h, kNone, kNone, root, true, nullptr, nullptr);
+    ++space.stats.evaluated;
+    if (h0 == kDeadEnd) {
+        return {SearchStatus::Unsolvable, {}};
+    }
+    if (space.is_goal(root)) {
+        return {SearchStatus::Solved, {}};
+    }
+    set_h(root, h0);
+    push(root, 0, h0);
+    std::vector<ActionId> ops;
+    while (open_size > 0) {
+        if (auto stop = space.limit_reached()) {
+            return {*stop, {}};
+        }
+        auto [e, hv] = pop();
+        Node& node = space.node(e.state);
+        if (node.closed && (!astar || e.g >= node.g)) {
+            continue;
+        }
+        if (e.g > node.g) {
+            continue; // a cheaper path was found after this entry
+        }
+        node.closed = true;
+        space.stats.f = astar ? e.g + hv : hv;
+        if (astar && space.is_goal(e.state)) {
+            return {SearchStatus::Solved, space.path_to(e.state)};
+        }
+        ++space.stats.expanded;
+        space.applicable(e.state, ops);
+        int g = e.g + 1;
+        for (ActionId a : ops) {
+            auto succ = space.successor(e.state, a);
+            if (!succ) {
+                continue;
+            }
+            Node& n = space.node(succ->id);
+            if (!succ->is_new) {
+                if (h.path_dependent()) {
+                    (void)evaluate(space, h, e.state, a, succ->id, false, nullptr, nullptr);
+                }
+                if (astar && !n.dead && g < n.g) {
+                    n.parent = e.state;
+                    n.action = a;
+                    n.g = g;
+                    n.closed = false;
+                    push(succ->id, g, hval[succ->id]);
+                }
+                continue;
+            }
+            n = {e.state, a, g, false, false};
+            int hs = evaluate(space, h, e.state, a, succ->id, true, nullptr, nullptr);
+            ++space.stats.evaluated;
+            if (hs == kDeadEnd) {
+                n.dead = true;
+                continue;
+            }
+            set_h(succ->id, hs);
+            if (!astar && space.is_goal(succ->id)) {
+                return {SearchStatus::Solved, space.path_to(succ->id)};
+            }
+            push(succ->id, g, hs);
+        }
+        space.stats.frontier = open_size;
+    }
+    return {SearchStatus::Unsolvable, {}};
+}
+
+EngineResult lazy_best_first(Space& space, const std::vector<Evaluator*>& hs, bool preferred,
+                             int weight, int bound) {
+    struct Entry {
+        StateId parent;
+        ActionId action;
+    };
+
+    // The open lists: per evaluator one of every successor and, with preferred operators, one of
+    // the preferred successors only; taken in turn by the lowest priority (Fast Downward's
+    // alternation open list).
+    struct Sub {
+        BucketList<Entry> list;
+        int priority = 0;
+        bool preferred_only = false;
+    };
+
+    std::vector<Sub> subs;
+    for (std::size_t i = 0; i < hs.size(); ++i) {
+        subs.push_back({});
+        if (preferred) {
+            subs.push_back({{}, 0, true});
+        }
+    }
+    std::size_t per_h = preferred ? 2 : 1;
+    std::vector<int> best(hs.size(), kDeadEnd);
+    std::vector<int> values(hs.size(), 0);
+    std::vector<ActionId> ops, pref;
+    bool path_dependent =
+        std::any_of(hs.begin(), hs.end(), [](const Evaluator* h) { return h->path_dependent(); });
+
+    // Evaluates s, then puts its successors into the open lists; false for a dead end.
+    auto expand = [&](StateId parent, ActionId a, StateId s, bool is_new) {
+        space.applicable(s, ops);
+        pref.clear();
+        for (std::size_t i = 0; i < hs.size(); ++i) {
+            values[i] =
+                evaluate(space, *hs[i], parent, a, s, is_new, &ops, preferred ? &pref : nullptr);
+            if (values[i] == kDeadEnd) {
+                space.node(s).dead = true;
+                ++space.stats.evaluated;
+                return false;
+            }
+        }
+        ++space.stats.evaluated;
+        ++space.stats.expanded;
+        bool progress = false;
+        for (std::size_t i = 0; i < hs.size(); ++i) {
+            if (values[i] < best[i]) {
+                best[i] = values[i];
+                progress = true;
+            }
+        }
+        if (progress && preferred) {
+            for (auto& sub : subs) {
+                if (sub.preferred_only) {
+                    sub.priority -= 1000;
+                }
+            }
+        }
+        int g = space.node(s).g;
+        if (bound > 0 && g + 1 >= bound) {
+            return true;
+        }
+        space.stats.f = values[0];
+        std::sort(pref.begin(), pref.end());
+        for (ActionId op : ops) {
+            bool p = preferred && std::binary_search(pref.begin(), pref.end(), op);
+            for (std::size_t i = 0; i < hs.size(); ++i) {
+                int key = weight == 0 ? values[i] : g + 1 + weight * values[i];
+                subs[i * per_h].list.push(key, {s, op});
+                if (p) {
+                    subs[i * per_h + 1].list.push(key, {s, op});
+                }
+            }
+        }
+        return true;
+    };
+
+    StateId root = space.initial();
+    if (!expand(kNone, kNone, root, true)) {
+        return {SearchStatus::Unsolvable, {}};
+    }
+    if (space.is_goal(root)) {
+        return {SearchStatus::Solved, {}};
+    }
+    for (;;) {
+        if (auto stop = space.limit_reached()) {
+            return {*stop, {}};
+        }
+        Sub* pick = nullptr;
+        for (auto& sub : subs) {
+            if (!sub.list.empty() && (pick == nullptr || sub.priority < pick->priority)) {
+                pick = &sub;
+            }
+        }
+        if (pick == nullptr) {
+            return {SearchStatus::Unsolvable, {}};
+        }
+        ++pick->priority;
+        auto [e, key] = pick->list.pop();
+        (void)key;
+        const Node parent = space.node(e.parent);
+        if (parent.dead) {
+            continue;
+        }
+        auto succ = space.successor(e.parent, e.action);
+        if (!succ) {
+            continue;
+        }
+        int g = parent.g + 1;
+        Node& n = space.node(succ->id);
+        if (!succ->is_new) {
+            if (path_dependent) {
+                const auto& values_now = space.values(succ->id);
+                for (Evaluator* h : hs) {
+                    if (h->path_dependent()) {
+                        h->reach(e.parent, e.action, succ->id, values_now, false);
+                    }
+                }
+            }
+            if (weight == 0 || n.dead || g >= n.g) {
+                continue; // greedy search does not reopen
+            }
+        }
+        n.parent = e.parent;
+        n.action = e.action;
+        n.g = g;
+        if (space.is_goal(succ->id)) {
+            return {SearchStatus::Solved, space.path_to(succ->id)};
+        }
+        if (!expand(e.parent, e.action, succ->id, succ->is_new)) {
+            continue;
+        }
+        std::size_t open = 0;
+        for (const auto& sub : subs) {
+            open += sub.list.size();
+        }
+        space.stats.frontier = open;
+    }
+}
+
+} // namespace catplan::plan::ground

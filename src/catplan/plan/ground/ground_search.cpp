@@ -1,0 +1,237 @@
+#include "catplan/plan/ground/ground_search.hpp"
+
+#include "catplan/plan/ground/compile.hpp"
+#include "catplan/plan/ground/plan_back.hpp"
+#include "catplan/plan/ground/space.hpp"
+#include "catplan/plan/validate.hpp"
+
+#include <fmt/format.h>
+
+namespace catplan::plan::ground {
+
+namespace {
+
+HeuristicKind resolve(HeuristicKind h, SearchKind search) {
+    if (h != HeuristicKind::Default) {
+        return h;
+    }
+    switch (search) {
+    case SearchKind::AStar:
+        return HeuristicKind::LmCut;
+    case SearchKind::BreadthFirst:
+        return HeuristicKind::Blind;
+    default:
+        return HeuristicKind::HFF;
+    }
+}
+
+bool prefers(HeuristicKind h) {
+    return h == HeuristicKind::HFF || h == HeuristicKind::LmCount;
+}
+
+// The evaluators of a configuration, made anew (a path-dependent one belongs to one search).
+class Evaluators {
+public:
+    Evaluators(const Task& task, const RelaxedTask& relaxed, Budget& budget,
+               const SearchOptions& o) {
+        if (o.search == SearchKind::Lama) {
+            kinds_ = {HeuristicKind::HFF, HeuristicKind::LmCount};
+        } else {
+            kinds_ = {resolve(o.heuristic, o.search)};
+        }
+        for (auto k : kinds_) {
+            owned_.push_back(make_evaluator(k, task, relaxed, budget));
+            raw_.push_back(owned_.back().get());
+        }
+    }
+
+    const std::vector<Evaluator*>& all() const { return raw_; }
+
+    Evaluator& first() { return *raw_.front(); }
+
+    bool preferred() const { return std::any_of(kinds_.begin(), kinds_.end(), prefers); }
+
+    std::string names() const {
+        std::string out;
+        for (auto k : kinds_) {
+            out += (out.empty() ? "" : " and ") + std::string(to_string(k));
+        }
+        return out;
+    }
+
+private:
+    std::vector<HeuristicKind> kinds_;
+    std::vector<std::unique_ptr<Evaluator>> owned_;
+    std::vector<Evaluator*> raw_;
+};
+
+std::string describe_config(const SearchOptions& o, const Evaluators& e) {
+    switch (o.search) {
+    case SearchKind::BreadthFirst:
+        return "breadth-first";
+    case SearchKind::AStar:
+        return fmt::format("A*, {}", e.names());
+    case SearchKind::GreedyBestFirst:
+        return fmt::format("eager greedy best-first, {}", e.names());
+    case SearchKind::LazyGreedy:
+    case SearchKind::Lama:
+        return fmt::format("lazy greedy best-first, {}{}", e.names(),
+                           e.preferred() ? ", preferred operators" : "");
+    }
+    CATPLAN_UNREACHABLE("search kind");
+}
+
+class Runner {
+public:
+    Runner(const Task& task, const SearchOptions& options, Budget& budget, SearchResult& result)
+        : task_(task), options_(options), budget_(budget), r_(result), relaxed_(task) {}
+
+    // The first search, then with anytime the weighted ones; the best plan in best_.
+    SearchStatus run() {
+        Evaluators e(task_, relaxed_, budget_, options_);
+        r_.config = describe_config(options_, e);
+        r_.stats.setup_seconds = budget_.elapsed();
+        EngineResult first = search(e, 0, 0);
+        if (first.status != SearchStatus::Solved) {
+            return first.status;
+        }
+        keep(first.plan);
+        bool optimal_search = options_.search == SearchKind::BreadthFirst ||
+                              (options_.search == SearchKind::AStar && e.first().admissible());
+        r_.optimal = optimal_search;
+        if (!options_.anytime || optimal_search) {
+            return SearchStatus::Solved;
+        }
+        r_.config += "; anytime: lazy weighted A* with weights 5, 3, 2, 1";
+        // As LAMA: each weight once, the last one again for as long as it finds a better plan.
+        for (int w : {5, 3, 2, 1, 1}) {
+            for (bool again = true; again && !best_.empty();) {
+                Evaluators ew(task_, relaxed_, budget_, options_);
+                EngineResult better = search(ew, w, static_cast<int>(best_.size()));
+                if (better.status == SearchStatus::Solved) {
+                    keep(better.plan);
+                } else if (better.status != SearchStatus::Unsolvable) {
+                    return SearchStatus::Solved; // a limit: the best plan so far stands
+                }
+                again = w == 1 && better.status == SearchStatus::Solved;
+            }
+        }
+        return SearchStatus::Solved;
+    }
+
+    const std::vector<ActionId>& best() const { return best_; }
+
+    std::uint64_t exits() const { return exits_; }
+
+    const std::string& exit_example() const { return exit_example_; }
+
+private:
+    EngineResult search(Evaluators& e, int weight, int bound) {
+        Space space(task_, budget_, options_, r_.stats);
+        EngineResult out;
+        switch (options_.search) {
+        case SearchKind::BreadthFirst:
+            out = weight == 0 ? breadth_first(space)
+                              : lazy_best_first(space, e.all(), false, weight, bound);
+            break;
+        case SearchKind::AStar:
+            out = eager_best_first(space, e.first(), true);
+            break;
+        case SearchKind::GreedyBestFirst:
+            out = weight == 0 ? eager_best_first(space, e.first(), false)
+                              : lazy_best_first(space, e.all(), false, weight, bound);
+            break;
+        case SearchKind::LazyGreedy:
+        case SearchKind::Lama:
+            out = lazy_best_first(space, e.all(), e.preferred(), weight, bound);
+            break;
+        }
+        exits_ += space.exits;
+        if (exit_example_.empty()) {
+            exit_example_ = space.exit_example;
+        }
+        return out;
+    }
+
+    void keep(const std::vector<ActionId>& plan) {
+        ++r_.stats.plans;
+        if (best_.empty() || plan.size() < best_.size() || r_.stats.plans == 1) {
+            best_ = plan;
+        }
+    }
+
+    const Task& task_;
+    const SearchOptions& options_;
+    Budget& budget_;
+    SearchResult& r_;
+    RelaxedTask relaxed_;
+    std::vector<ActionId> best_;
+    std::uint64_t exits_ = 0;
+    std::string exit_example_;
+};
+
+void fill_stats(SearchResult& r, Budget& budget) {
+    r.stats.seconds = budget.elapsed();
+    (void)budget.check();
+    r.stats.memory = budget.resident();
+    r.stats.peak_memory = budget.peak_bytes();
+    if (r.stats.setup_seconds == 0) {
+        r.stats.setup_seconds = r.stats.seconds;
+    }
+}
+
+} // namespace
+
+GroundOutcome ground_search(const ProblemPtr& problem, const SearchOptions& options,
+                            Budget& budget) {
+    GroundOutcome out;
+    out.result.path = "grounded";
+    std::optional<Task> task;
+    try {
+        auto compiled = compile(problem, budget);
+        out.result.stats.ground_seconds = budget.elapsed();
+        if (!compiled) {
+            out.why_not = compiled.error();
+            return out;
+        }
+        task.emplace(std::move(*compiled));
+    } catch (const LimitReached& stop) {
+        out.compiled = true; // the limit stops the whole run: no fall-back
+        out.result.status = stop.status;
+        out.result.config = "compiling the ground task";
+        fill_stats(out.result, budget);
+        return out;
+    }
+    out.compiled = true;
+    auto& r = out.result;
+    r.stats.variables = task->vars.size();
+    r.stats.actions = task->actions.size();
+    Runner runner(*task, options, budget, r);
+    try {
+        r.status = runner.run();
+    } catch (const LimitReached& stop) {
+        r.status = stop.status;
+    }
+    if (r.stats.plans > 0) {
+        r.status = SearchStatus::Solved;
+    }
+    r.exits = runner.exits();
+    r.exit_example = runner.exit_example();
+    if (r.exits > 0) {
+        r.optimal = false;
+    }
+    if (r.status == SearchStatus::Solved) {
+        auto plan = to_dpo_plan(*task, runner.best());
+        if (!plan) {
+            out.rejected = plan.error();
+        } else if (auto v = validate_plan(*problem, *plan); !v.valid) {
+            out.rejected = v.reason;
+        } else {
+            r.plan = std::move(*plan);
+        }
+    }
+    fill_stats(r, budget);
+    return out;
+}
+
+} // namespace catplan::plan::ground

@@ -1,0 +1,144 @@
+#include "catplan/plan/detail/test_domains.hpp"
+#include "catplan/plan/search.hpp"
+#include "catplan/plan/validate.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <memory>
+
+namespace catplan::plan {
+namespace {
+
+using namespace testing;
+
+ProblemPtr seeded_blocks(int n, std::uint64_t seed) {
+    std::mt19937_64 rng(seed);
+    auto init = random_towers(n, rng);
+    auto goal = random_towers(n, rng);
+    return blocks_problem(blocks_domain(true), block_names(n), init, goal);
+}
+
+SearchResult solve(const Problem& p, SearchKind s, HeuristicKind h, bool anytime = false) {
+    SearchOptions opt;
+    opt.search = s;
+    opt.heuristic = h;
+    opt.anytime = anytime;
+    opt.max_nodes = 100'000;
+    auto r = find_plan(p, opt);
+    EXPECT_EQ(r.path, "grounded") << r.path_reason;
+    EXPECT_EQ(r.status, SearchStatus::Solved) << to_string(s) << " " << to_string(h);
+    if (r.plan) {
+        auto v = validate_plan(p, *r.plan);
+        EXPECT_TRUE(v.valid) << v.reason << "\n" << r.plan->to_string();
+    }
+    return r;
+}
+
+TEST(GroundSearch, EveryConfigurationGivesValidPlansAndAStarIsOptimal) {
+    for (std::uint64_t seed : {1u, 3u, 4u}) {
+        auto p = seeded_blocks(6, seed);
+        SCOPED_TRACE("seed " + std::to_string(seed));
+        auto bfs = solve(*p, SearchKind::BreadthFirst, HeuristicKind::Default);
+        ASSERT_TRUE(bfs.plan);
+        EXPECT_TRUE(bfs.optimal);
+        for (auto h : {HeuristicKind::LmCut, HeuristicKind::HMax, HeuristicKind::Blind}) {
+            auto r = solve(*p, SearchKind::AStar, h);
+            ASSERT_TRUE(r.plan);
+            EXPECT_EQ(r.plan->steps.size(), bfs.plan->steps.size()) << to_string(h);
+            EXPECT_TRUE(r.optimal) << to_string(h);
+        }
+        auto lmcut = solve(*p, SearchKind::AStar, HeuristicKind::LmCut);
+        auto hmax = solve(*p, SearchKind::AStar, HeuristicKind::HMax);
+        EXPECT_LE(lmcut.stats.expanded, hmax.stats.expanded); // LM-cut dominates h_max
+        for (auto s : {SearchKind::GreedyBestFirst, SearchKind::LazyGreedy}) {
+            for (auto h : {HeuristicKind::HFF, HeuristicKind::HAdd, HeuristicKind::LmCount,
+                           HeuristicKind::GoalCount}) {
+                auto r = solve(*p, s, h);
+                EXPECT_FALSE(r.optimal);
+            }
+        }
+        auto lama = solve(*p, SearchKind::Lama, HeuristicKind::Default);
+        auto any = solve(*p, SearchKind::Lama, HeuristicKind::Default, true);
+        ASSERT_TRUE(lama.plan && any.plan);
+        EXPECT_LE(any.plan->steps.size(), lama.plan->steps.size());
+        EXPECT_GE(any.stats.plans, 1u);
+        // The last anytime search (weight 1 with the bound) exhausts the space below the best
+        // plan, and h_FF prunes only dead ends, so the plan is as short as BFS's.
+        EXPECT_EQ(any.plan->steps.size(), bfs.plan->steps.size());
+    }
+}
+
+TEST(GroundSearch, ThePapersCaseStudyIsSolvedByGreedySearch) {
+    // The C-set search's greedy search never leaves the plateau of states in which putdown or
+    // stack was applied to the marker block itself (each makes a new marker, so the plateau is
+    // infinite, and h_FF cannot tell them apart); the ground task has one marker slot, so those
+    // transitions leave it and are not followed.
+    auto p = paper_case_study();
+    for (auto s : {SearchKind::GreedyBestFirst, SearchKind::LazyGreedy, SearchKind::Lama}) {
+        auto r = solve(*p, s, HeuristicKind::Default);
+        if (s == SearchKind::GreedyBestFirst) {
+            EXPECT_GT(r.exits, 0u); // eager search generates them (lazy search need not)
+        }
+        EXPECT_LT(r.stats.expanded, 200u) << to_string(s);
+    }
+    auto a = solve(*p, SearchKind::AStar, HeuristicKind::LmCut);
+    ASSERT_TRUE(a.plan);
+    EXPECT_EQ(a.plan->steps.size(), 8u); // as short as the C-set BFS's plan
+    EXPECT_FALSE(a.optimal);             // transitions were left out: no optimality claim
+}
+
+TEST(GroundSearch, ExitsMakeTheC_SetSearchDecideUnsolvability) {
+    // The goal needs a second Empty, which only putdown of the marker block (leaving the ground
+    // task) could make: the grounded search exhausts its task and hands over.
+    auto p = std::make_shared<Problem>(*paper_case_study());
+    ACSet g(p->domain->schema);
+    paper_hand(g, true);
+    paper_hand(g, true);
+    g.remove_part(kP.gripper, 1);
+    p->goal = std::make_shared<ACSet>(std::move(g));
+    SearchOptions opt;
+    opt.max_nodes = 50'000;
+    auto r = find_plan(*p, opt);
+    EXPECT_EQ(r.path, "C-set");
+    EXPECT_NE(r.path_reason.find("left out"), std::string::npos) << r.path_reason;
+}
+
+TEST(GroundSearch, AnUnreachableGoalIsProvedUnsolvable) {
+    auto d = blocks_domain(true);
+    auto p = std::make_shared<Problem>();
+    p->domain = d;
+    p->initial = std::make_shared<ACSet>(blocks_state(d->schema, {"A", "B", "C"}, {{0}, {1}, {2}}));
+    p->goal = std::make_shared<ACSet>(blocks_goal(d->schema, {"A", "B", "C", "D"}, {}));
+    for (auto s : {SearchKind::BreadthFirst, SearchKind::Lama, SearchKind::AStar}) {
+        SearchOptions opt;
+        opt.search = s;
+        auto r = find_plan(*p, opt);
+        EXPECT_EQ(r.path, "grounded");
+        EXPECT_EQ(r.status, SearchStatus::Unsolvable) << to_string(s);
+    }
+}
+
+TEST(GroundSearch, LimitsCountTheSetUpAndHold) {
+    auto p = seeded_blocks(40, 7);
+    SearchOptions time;
+    time.search = SearchKind::AStar;
+    time.max_seconds = 1e-6; // passed while compiling
+    auto r = find_plan(*p, time);
+    EXPECT_EQ(r.status, SearchStatus::TimeLimit);
+    EXPECT_GT(r.stats.seconds, 0.0);
+    EXPECT_FALSE(r.plan);
+    // The memory limit is on the whole process: BFS on 40 blocks fills it.
+    SearchOptions memory;
+    memory.search = SearchKind::BreadthFirst;
+    std::size_t before = resident_bytes();
+    memory.max_bytes = before + (48u << 20);
+    auto m = find_plan(*p, memory);
+    EXPECT_EQ(m.status, SearchStatus::MemoryLimit);
+    EXPECT_LE(static_cast<double>(m.stats.peak_memory),
+              1.1 * static_cast<double>(memory.max_bytes));
+    EXPECT_GT(m.stats.expanded, 0u);
+}
+
+} // namespace
+} // namespace catplan::plan

@@ -1,0 +1,249 @@
+#include "catplan/plan/ground/heuristics.hpp"
+
+#include "catplan/plan/ground/landmarks.hpp"
+
+#include <algorithm>
+#include <limits>
+
+namespace catplan::plan::ground {
+
+namespace {
+
+constexpr int kInf = std::numeric_limits<int>::max();
+
+class Blind final : public Evaluator {
+public:
+    explicit Blind(const Task& task) : task_(task) {}
+
+    int evaluate(StateId, const std::vector<std::uint32_t>& state, const std::vector<ActionId>*,
+                 std::vector<ActionId>*) override {
+        for (const auto& term : task_.goal) {
+            if (std::all_of(term.begin(), term.end(),
+                            [&](const Fact& f) { return state[f.var] == f.value; })) {
+                return 0;
+            }
+        }
+        return 1;
+    }
+
+    bool admissible() const override { return true; }
+
+private:
+    const Task& task_;
+};
+
+class GoalCount final : public Evaluator {
+public:
+    explicit GoalCount(const Task& task) : task_(task) {}
+
+    int evaluate(StateId, const std::vector<std::uint32_t>& state, const std::vector<ActionId>*,
+                 std::vector<ActionId>*) override {
+        int best = task_.goal.empty() ? kDeadEnd : kInf;
+        for (const auto& term : task_.goal) {
+            int h = 0;
+            for (const Fact& f : term) {
+                h += state[f.var] == f.value ? 0 : 1;
+            }
+            best = std::min(best, h);
+        }
+        return best;
+    }
+
+private:
+    const Task& task_;
+};
+
+// Propositions by cost, for a Dijkstra in which costs only grow while popping: buckets for small
+// costs (Dial's algorithm), a binary heap for the rare large ones (h_add's sums).
+class AdaptiveQueue {
+public:
+    void clear() {
+        for (std::size_t i = 0; i < used_; ++i) {
+            buckets_[i].clear();
+        }
+        heap_.clear();
+        current_ = used_ = size_ = 0;
+    }
+
+    void push(int cost, Prop p) {
+        auto c = static_cast<std::size_t>(cost);
+        if (c < kBuckets) {
+            if (c >= buckets_.size()) {
+                buckets_.resize(std::min(kBuckets, 2 * c + 16));
+            }
+            buckets_[c].push_back(p);
+            used_ = std::max(used_, c + 1);
+            current_ = std::min(current_, c);
+        } else {
+            heap_.push_back({cost, p});
+            std::push_heap(heap_.begin(), heap_.end(), std::greater<>());
+        }
+        ++size_;
+    }
+
+    bool empty() const { return size_ == 0; }
+
+    std::pair<int, Prop> pop() {
+        --size_;
+        while (current_ < used_ && buckets_[current_].empty()) {
+            ++current_;
+        }
+        if (current_ < used_) {
+            Prop p = buckets_[current_].back();
+            buckets_[current_].pop_back();
+            return {static_cast<int>(current_), p};
+        }
+        std::pop_heap(heap_.begin(), heap_.end(), std::greater<>());
+        auto top = heap_.back();
+        heap_.pop_back();
+        return top;
+    }
+
+private:
+    static constexpr std::size_t kBuckets = 1 << 14;
+    std::vector<std::vector<Prop>> buckets_;
+    std::vector<std::pair<int, Prop>> heap_;
+    std::size_t current_ = 0, used_ = 0, size_ = 0;
+};
+
+// h_add, h_max and h_FF: a generalised Dijkstra over the propositions from the state's.
+class Relaxation final : public Evaluator {
+public:
+    enum class Mode { Add, Max, FF };
+
+    Relaxation(const RelaxedTask& r, Mode mode, Budget& budget)
+        : r_(r), mode_(mode), budget_(budget) {}
+
+    int evaluate(StateId, const std::vector<std::uint32_t>& state, const std::vector<ActionId>*,
+                 std::vector<ActionId>* preferred) override {
+        explore(state);
+        int h = 0;
+        for (Prop g : r_.goal()) {
+            if (cost_[g] == kInf) {
+                return kDeadEnd;
+            }
+            h = mode_ == Mode::Max ? std::max(h, cost_[g]) : h + cost_[g];
+        }
+        if (mode_ != Mode::FF) {
+            return std::min(h, kDeadEnd - 1);
+        }
+        return relaxed_plan(preferred);
+    }
+
+    bool admissible() const override { return mode_ == Mode::Max; }
+
+private:
+    void explore(const std::vector<std::uint32_t>& state) {
+        const auto& actions = r_.actions();
+        cost_.assign(r_.num_props(), kInf);
+        supporter_.assign(r_.num_props(), kNone);
+        unsat_.resize(actions.size());
+        acc_.assign(actions.size(), 0);
+        queue_.clear();
+        r_.props_of(state, init_);
+        for (Prop p : init_) {
+            cost_[p] = 0;
+            queue_.push(0, p);
+        }
+        for (std::uint32_t a = 0; a < actions.size(); ++a) {
+            unsat_[a] = static_cast<std::uint32_t>(actions[a].pre.size());
+        }
+        for (std::uint32_t a : r_.unconditional()) {
+            fire(a);
+        }
+        while (!queue_.empty()) {
+            auto [c, p] = queue_.pop();
+            if (c > cost_[p]) {
+                continue;
+            }
+            budget_.poll();
+            for (std::uint32_t a : r_.pre_of(p)) {
+                acc_[a] =
+                    mode_ == Mode::Max ? std::max(acc_[a], c) : std::min(acc_[a] + c, kDeadEnd);
+                if (--unsat_[a] == 0) {
+                    fire(a);
+                }
+            }
+        }
+    }
+
+    void fire(std::uint32_t a) {
+        const auto& act = r_.actions()[a];
+        int c = act.cost + acc_[a];
+        for (Prop q : act.add) {
+            if (c < cost_[q]) {
+                cost_[q] = c;
+                supporter_[q] = a;
+                queue_.push(c, q);
+            }
+        }
+    }
+
+    // The relaxed plan of the best supporters; its actions applicable now are preferred.
+    int relaxed_plan(std::vector<ActionId>* preferred) {
+        const auto& actions = r_.actions();
+        in_plan_.assign(actions.size(), 0);
+        marked_.assign(r_.num_props(), 0);
+        stack_.assign(r_.goal().begin(), r_.goal().end());
+        int h = 0;
+        while (!stack_.empty()) {
+            Prop p = stack_.back();
+            stack_.pop_back();
+            if (marked_[p] || cost_[p] == 0) {
+                continue;
+            }
+            marked_[p] = 1;
+            std::uint32_t a = supporter_[p];
+            if (in_plan_[a]) {
+                continue;
+            }
+            in_plan_[a] = 1;
+            h += actions[a].cost;
+            bool applicable = true;
+            for (Prop q : actions[a].pre) {
+                stack_.push_back(q);
+                applicable = applicable && cost_[q] == 0;
+            }
+            if (preferred != nullptr && applicable && actions[a].action != kNone) {
+                preferred->push_back(actions[a].action);
+                preferred->insert(preferred->end(), actions[a].also.begin(), actions[a].also.end());
+            }
+        }
+        return std::min(h, kDeadEnd - 1);
+    }
+
+    const RelaxedTask& r_;
+    Mode mode_;
+    Budget& budget_;
+    std::vector<int> cost_, acc_;
+    std::vector<std::uint32_t> supporter_, unsat_;
+    std::vector<Prop> init_, stack_;
+    std::vector<char> in_plan_, marked_;
+    AdaptiveQueue queue_;
+};
+
+} // namespace
+
+std::unique_ptr<Evaluator> make_evaluator(HeuristicKind kind, const Task& task,
+                                          const RelaxedTask& relaxed, Budget& budget) {
+    switch (kind) {
+    case HeuristicKind::Blind:
+        return std::make_unique<Blind>(task);
+    case HeuristicKind::GoalCount:
+        return std::make_unique<GoalCount>(task);
+    case HeuristicKind::HAdd:
+        return std::make_unique<Relaxation>(relaxed, Relaxation::Mode::Add, budget);
+    case HeuristicKind::HMax:
+        return std::make_unique<Relaxation>(relaxed, Relaxation::Mode::Max, budget);
+    case HeuristicKind::Default:
+    case HeuristicKind::HFF:
+        return std::make_unique<Relaxation>(relaxed, Relaxation::Mode::FF, budget);
+    case HeuristicKind::LmCut:
+        return make_lm_cut(relaxed, budget);
+    case HeuristicKind::LmCount:
+        return make_landmark_count(task, relaxed, budget);
+    }
+    CATPLAN_UNREACHABLE("heuristic kind");
+}
+
+} // namespace catplan::plan::ground

@@ -1,0 +1,199 @@
+// LM-cut (Helmert & Domshlak 2009): repeatedly compute h_max, find a cut of actions between the
+// state and the goal zone (the propositions that reach the goal through zero-cost actions along
+// h_max supporters), add the cut's least cost, and lower the cut's costs by it.
+
+#include "catplan/plan/ground/heuristics.hpp"
+#include "catplan/plan/ground/landmarks.hpp"
+
+#include <algorithm>
+#include <limits>
+#include <queue>
+
+namespace catplan::plan::ground {
+
+namespace {
+
+constexpr int kInf = std::numeric_limits<int>::max();
+
+class LmCut final : public Evaluator {
+public:
+    LmCut(const RelaxedTask& r, Budget& budget) : r_(r), budget_(budget) {
+        achievers_.assign(r.num_props(), {});
+        for (std::uint32_t a = 0; a < r.actions().size(); ++a) {
+            for (Prop p : r.actions()[a].add) {
+                achievers_[p].push_back(a);
+            }
+        }
+    }
+
+    int evaluate(StateId, const std::vector<std::uint32_t>& state, const std::vector<ActionId>*,
+                 std::vector<ActionId>*) override {
+        const auto& actions = r_.actions();
+        cost_.resize(actions.size());
+        for (std::uint32_t a = 0; a < actions.size(); ++a) {
+            cost_[a] = actions[a].cost;
+        }
+        r_.props_of(state, init_);
+        int h = 0;
+        for (;;) {
+            budget_.poll();
+            hmax();
+            int g = 0;
+            for (Prop p : r_.goal()) {
+                if (value_[p] == kInf) {
+                    return kDeadEnd;
+                }
+                g = std::max(g, value_[p]);
+            }
+            if (g == 0) {
+                return h;
+            }
+            mark_goal_zone();
+            int m = cut();
+            CATPLAN_ASSERT(m > 0 && m < kInf, "an LM-cut cut without a positive cost");
+            h += m;
+            for (std::uint32_t a : cut_) {
+                cost_[a] -= m;
+            }
+        }
+    }
+
+    bool admissible() const override { return true; }
+
+private:
+    // h_max under the current costs, with each action's supporter (its precondition of largest
+    // value; kNone for an action with none).
+    void hmax() {
+        const auto& actions = r_.actions();
+        value_.assign(r_.num_props(), kInf);
+        unsat_.resize(actions.size());
+        acc_.assign(actions.size(), 0);
+        supporter_.assign(actions.size(), kNone);
+        using Item = std::pair<int, Prop>;
+        std::priority_queue<Item, std::vector<Item>, std::greater<>> queue;
+        for (Prop p : init_) {
+            value_[p] = 0;
+            queue.push({0, p});
+        }
+        for (std::uint32_t a = 0; a < actions.size(); ++a) {
+            unsat_[a] = static_cast<std::uint32_t>(actions[a].pre.size());
+        }
+        auto fire = [&](std::uint32_t a) {
+            int c = acc_[a] + cost_[a];
+            for (Prop q : actions[a].add) {
+                if (c < value_[q]) {
+                    value_[q] = c;
+                    queue.push({c, q});
+                }
+            }
+        };
+        for (std::uint32_t a : r_.unconditional()) {
+            fire(a);
+        }
+        while (!queue.empty()) {
+            auto [c, p] = queue.top();
+            queue.pop();
+            if (c > value_[p]) {
+                continue;
+            }
+            for (std::uint32_t a : r_.pre_of(p)) {
+                if (c >= acc_[a]) {
+                    acc_[a] = c;
+                    supporter_[a] = p; // the last precondition reached has the largest value
+                }
+                if (--unsat_[a] == 0) {
+                    fire(a);
+                }
+            }
+        }
+    }
+
+    // The goal zone: the goal fact of largest h_max (the supporter of the goal's artificial
+    // zero-cost action), and the supporters of zero-cost actions adding a zone member.
+    void mark_goal_zone() {
+        zone_.assign(r_.num_props(), 0);
+        Prop seed = r_.goal().front();
+        for (Prop g : r_.goal()) {
+            if (value_[g] > value_[seed]) {
+                seed = g;
+            }
+        }
+        std::vector<Prop> stack{seed};
+        zone_[seed] = 1;
+        while (!stack.empty()) {
+            Prop p = stack.back();
+            stack.pop_back();
+            for (std::uint32_t a : achievers_[p]) {
+                Prop s = supporter_[a];
+                if (cost_[a] == 0 && s != kNone && value_[s] != kInf && !zone_[s]) {
+                    zone_[s] = 1;
+                    stack.push_back(s);
+                }
+            }
+        }
+    }
+
+    // The actions that cross from the part reachable from the state (along supporters, outside
+    // the goal zone) into the goal zone; returns their least cost.
+    int cut() {
+        const auto& actions = r_.actions();
+        cut_.clear();
+        seen_.assign(r_.num_props(), 0);
+        in_cut_.assign(actions.size(), 0);
+        std::vector<Prop> stack;
+        // An action from the reached part: into the cut if an effect is in the goal zone; its
+        // other effects are reached (they may lead to more of the cut).
+        auto through = [&](std::uint32_t a) {
+            for (Prop q : actions[a].add) {
+                if (zone_[q]) {
+                    if (!in_cut_[a]) {
+                        in_cut_[a] = 1;
+                        cut_.push_back(a);
+                    }
+                } else if (!seen_[q]) {
+                    seen_[q] = 1;
+                    stack.push_back(q);
+                }
+            }
+        };
+        for (Prop p : init_) {
+            if (!zone_[p] && !seen_[p]) {
+                seen_[p] = 1;
+                stack.push_back(p);
+            }
+        }
+        for (std::uint32_t a : r_.unconditional()) {
+            through(a);
+        }
+        while (!stack.empty()) {
+            Prop p = stack.back();
+            stack.pop_back();
+            for (std::uint32_t a : r_.pre_of(p)) {
+                if (supporter_[a] == p && unsat_[a] == 0) {
+                    through(a);
+                }
+            }
+        }
+        int m = kInf;
+        for (std::uint32_t a : cut_) {
+            m = std::min(m, cost_[a]);
+        }
+        return m;
+    }
+
+    const RelaxedTask& r_;
+    Budget& budget_;
+    std::vector<std::vector<std::uint32_t>> achievers_;
+    std::vector<int> cost_, value_, acc_;
+    std::vector<std::uint32_t> unsat_, cut_;
+    std::vector<Prop> supporter_, init_;
+    std::vector<char> zone_, seen_, in_cut_;
+};
+
+} // namespace
+
+std::unique_ptr<Evaluator> make_lm_cut(const RelaxedTask& relaxed, Budget& budget) {
+    return std::make_unique<LmCut>(relaxed, budget);
+}
+
+} // namespace catplan::plan::ground

@@ -1,0 +1,144 @@
+#include "catplan/plan/ground/relaxed.hpp"
+
+#include <algorithm>
+#include <map>
+
+namespace catplan::plan::ground {
+
+RelaxedTask::RelaxedTask(const Task& task) {
+    offset_.resize(task.vars.size());
+    for (VarId v = 0; v < task.vars.size(); ++v) {
+        offset_[v] = num_props_;
+        num_props_ += task.vars[v].size();
+    }
+    var_props_ = num_props_;
+    relaxed_of_.assign(task.actions.size(), kNone);
+    for (ActionId a = 0; a < task.actions.size(); ++a) {
+        const Action& act = task.actions[a];
+        if (!act.exit.empty()) {
+            continue;
+        }
+        RelaxedAction r;
+        r.action = a;
+        auto absent = [&](const Fact& f) {
+            auto kind = task.vars[f.var].kind;
+            return f.value == 0 &&
+                   (kind == Variable::Kind::Presence || kind == Variable::Kind::Atom);
+        };
+        for (const Fact& f : act.pre) {
+            if (!absent(f)) {
+                r.pre.push_back(prop(f));
+            }
+        }
+        for (const Fact& f : act.eff) {
+            if (!absent(f)) {
+                r.add.push_back(prop(f));
+            }
+        }
+        std::sort(r.pre.begin(), r.pre.end());
+        std::sort(r.add.begin(), r.add.end());
+        actions_.push_back(std::move(r));
+    }
+    drop_dominated(task);
+    for (std::uint32_t i = 0; i < actions_.size(); ++i) {
+        relaxed_of_[actions_[i].action] = i;
+        for (ActionId b : actions_[i].also) {
+            relaxed_of_[b] = i;
+        }
+    }
+    if (task.goal.size() == 1) {
+        for (const Fact& f : task.goal[0]) {
+            goal_.push_back(prop(f));
+        }
+    } else {
+        Prop g = num_props_++;
+        goal_.push_back(g);
+        for (const auto& term : task.goal) {
+            RelaxedAction r;
+            r.cost = 0;
+            for (const Fact& f : term) {
+                r.pre.push_back(prop(f));
+            }
+            r.add.push_back(g);
+            actions_.push_back(std::move(r));
+        }
+    }
+    pre_of_.assign(num_props_, {});
+    for (std::uint32_t i = 0; i < actions_.size(); ++i) {
+        auto& pre = actions_[i].pre;
+        std::sort(pre.begin(), pre.end());
+        pre.erase(std::unique(pre.begin(), pre.end()), pre.end());
+        if (pre.empty()) {
+            unconditional_.push_back(i);
+        }
+        for (Prop p : pre) {
+            pre_of_[p].push_back(i);
+        }
+    }
+}
+
+void RelaxedTask::drop_dominated(const Task& task) {
+    // Candidates share the objects their matches send L's parts to (the variants of one PDDL
+    // action at one binding do).
+    std::map<std::vector<ObjectId>, std::vector<std::uint32_t>> groups;
+    for (std::uint32_t i = 0; i < actions_.size(); ++i) {
+        std::vector<ObjectId> key;
+        for (const auto& per_ob : task.actions[actions_[i].action].match) {
+            for (Image c : per_ob) {
+                if (!c.atom) {
+                    key.push_back(c.id);
+                }
+            }
+        }
+        std::sort(key.begin(), key.end());
+        key.erase(std::unique(key.begin(), key.end()), key.end());
+        groups[std::move(key)].push_back(i);
+    }
+    std::vector<char> gone(actions_.size(), 0);
+    auto dominates = [&](const RelaxedAction& a, const RelaxedAction& b) {
+        return a.cost <= b.cost &&
+               std::includes(b.pre.begin(), b.pre.end(), a.pre.begin(), a.pre.end()) &&
+               std::includes(a.add.begin(), a.add.end(), b.add.begin(), b.add.end());
+    };
+    for (const auto& [key, members] : groups) {
+        for (std::uint32_t i : members) {
+            for (std::uint32_t j : members) {
+                if (i == j || gone[i] || gone[j] || !dominates(actions_[i], actions_[j])) {
+                    continue;
+                }
+                gone[j] = 1;
+                auto& also = actions_[i].also;
+                also.push_back(actions_[j].action);
+                also.insert(also.end(), actions_[j].also.begin(), actions_[j].also.end());
+            }
+        }
+    }
+    std::size_t kept = 0;
+    for (std::uint32_t i = 0; i < actions_.size(); ++i) {
+        if (!gone[i]) {
+            if (kept != i) {
+                actions_[kept] = std::move(actions_[i]);
+            }
+            ++kept;
+        }
+    }
+    actions_.resize(kept);
+}
+
+Fact RelaxedTask::fact(Prop p) const {
+    if (p >= var_props_) {
+        return {kNone, 0}; // the goal proposition
+    }
+    auto it = std::upper_bound(offset_.begin(), offset_.end(), p);
+    auto var = static_cast<VarId>(std::distance(offset_.begin(), it) - 1);
+    return {var, p - offset_[var]};
+}
+
+void RelaxedTask::props_of(const std::vector<std::uint32_t>& state, std::vector<Prop>& out) const {
+    out.resize(state.size());
+    for (VarId v = 0; v < state.size(); ++v) {
+        out[v] = offset_[v] + state[v];
+    }
+}
+
+} // namespace catplan::plan::ground

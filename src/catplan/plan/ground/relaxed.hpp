@@ -1,0 +1,68 @@
+#pragma once
+// The delete relaxation of a ground task, shared by its heuristics: one proposition per variable
+// value; per ground action its preconditions and its effects as adds, unit costs, with forbidden
+// facts and negative conditions dropped and exits left out. Facts that a two-valued variable
+// (presence of an atom or a slot) is absent are dropped from preconditions and effects, as STRIPS
+// relaxations drop deletes and negative preconditions. Then an action is dropped when another
+// needs no more and adds no less (PDDL's rule variants, import.hpp, collapse to one): each
+// relaxed action lists the ground actions it stands for, so preferred operators name them all.
+// A goal with several terms gets one more proposition, the goal, and a zero-cost action per term
+// that adds it, so every heuristic sees one conjunction.
+
+#include "catplan/plan/ground/task.hpp"
+
+#include <vector>
+
+namespace catplan::plan::ground {
+
+using Prop = std::uint32_t;
+
+struct RelaxedAction {
+    std::vector<Prop> pre, add;
+    int cost = 1;
+    ActionId action = kNone;    // the ground action, or kNone for a goal action
+    std::vector<ActionId> also; // the ground actions it stands for besides `action`
+};
+
+class RelaxedTask {
+public:
+    explicit RelaxedTask(const Task& task);
+
+    std::uint32_t num_props() const { return num_props_; }
+
+    Prop prop(Fact f) const { return offset_[f.var] + f.value; }
+
+    Prop prop(VarId var, std::uint32_t value) const { return offset_[var] + value; }
+
+    /// The fact a proposition stands for (the goal proposition has var kNone).
+    Fact fact(Prop p) const;
+
+    const std::vector<RelaxedAction>& actions() const { return actions_; }
+
+    /// The relaxed actions with proposition p as a precondition.
+    const std::vector<std::uint32_t>& pre_of(Prop p) const { return pre_of_[p]; }
+
+    /// The relaxed actions with no precondition.
+    const std::vector<std::uint32_t>& unconditional() const { return unconditional_; }
+
+    const std::vector<Prop>& goal() const { return goal_; }
+
+    /// The propositions true in a state (a value per variable), sorted.
+    void props_of(const std::vector<std::uint32_t>& state, std::vector<Prop>& out) const;
+
+    /// The relaxed action of each ground action (kNone for an exit).
+    std::uint32_t relaxed_of(ActionId a) const { return relaxed_of_[a]; }
+
+private:
+    void drop_dominated(const Task& task);
+
+    std::vector<std::uint32_t> offset_;
+    std::uint32_t num_props_ = 0, var_props_ = 0;
+    std::vector<RelaxedAction> actions_;
+    std::vector<std::vector<std::uint32_t>> pre_of_;
+    std::vector<std::uint32_t> unconditional_;
+    std::vector<Prop> goal_;
+    std::vector<std::uint32_t> relaxed_of_;
+};
+
+} // namespace catplan::plan::ground

@@ -1,0 +1,77 @@
+#pragma once
+// A state whose parts are named, with an index name -> part per object kept in step with every
+// rewrite, so that a transfer step costs what it touches, not the size of the state. A name
+// shared by two parts of an object is ambiguous: find() answers kNoPart for it.
+//
+// Names are how a transfer carries matches from the source to the target (transfer.hpp); the
+// index is internal to the transfer layer.
+
+#include "catplan/acset/acset.hpp"
+#include "catplan/base/result.hpp"
+#include "catplan/hom/morphism.hpp"
+#include "catplan/rewrite/rule.hpp"
+
+#include <functional>
+#include <map>
+#include <string>
+#include <string_view>
+#include <unordered_map>
+#include <vector>
+
+namespace catplan::transfer {
+
+class NamedState {
+public:
+    explicit NamedState(acset::ACSet x);
+
+    const acset::ACSet& state() const { return x_; }
+
+    /// The state, moved out (the names index is left behind).
+    acset::ACSet release() && { return std::move(x_); }
+
+    /// The only part of ob with this name, or kNoPart (none, or several).
+    Part find(ObId ob, std::string_view name) const {
+        auto it = index_[ob.index()].find(name);
+        return it == index_[ob.index()].end() ? kNoPart : it->second;
+    }
+
+    /// Whether several parts of ob have this name.
+    bool ambiguous(ObId ob, std::string_view name) const {
+        auto it = index_[ob.index()].find(name);
+        return it != index_[ob.index()].end() && it->second == kNoPart;
+    }
+
+    /// Applies rule at m in place, naming each created part with name_of(ob, part of R); returns
+    /// the comatch R -> X.
+    Result<hom::ACSetMorphism> apply(const rewrite::Rule& rule, const hom::ACSetMorphism& m,
+                                     const std::function<std::string(ObId, Part)>& name_of);
+
+    /// A name for a new part of ob, starting from base, that no part of ob has: base, else
+    /// base2, base3, ... (the first free one). The search for a suffix starts at a hint per base
+    /// below which every suffix is taken, lowered when a name with a smaller suffix is freed, so
+    /// that a step costs what it creates, not the number of names sharing the base.
+    std::string fresh_name(ObId ob, const std::string& base);
+
+private:
+    // Keys are views of part names, which are interned for the life of the process; a name
+    // that several parts share maps to kNoPart.
+    using Index = std::unordered_map<std::string_view, Part>;
+
+    bool taken(ObId ob, std::string_view name) const { return index_[ob.index()].count(name) > 0; }
+
+    void add(ObId ob, Part p);
+    void remove(ObId ob, Part p);
+    void moved(ObId ob, Part p, Part survivors);
+    void freed(ObId ob, std::string_view name);
+    void name_created(const rewrite::Rule& rule, const hom::ACSetMorphism& r_to_x,
+                      const std::vector<Part>& survivors,
+                      const std::function<std::string(ObId, Part)>& name_of);
+
+    acset::ACSet x_;
+    /// Per object: name -> the part that has it (kNoPart when several do).
+    std::vector<Index> index_;
+    /// Per object: for each base fresh_name had to suffix, the smallest suffix that may be free.
+    std::vector<std::map<std::string, std::uint64_t, std::less<>>> suffix_hints_;
+};
+
+} // namespace catplan::transfer

@@ -1,0 +1,122 @@
+#include "catplan/transfer/terms.hpp"
+
+#include <algorithm>
+#include <fmt/format.h>
+#include <tuple>
+
+namespace catplan::transfer {
+
+bool is_user_name(std::string_view name) {
+    return !name.empty() && name.find_first_of("#@") == std::string_view::npos;
+}
+
+std::vector<std::string> part_words(const acset::ACSet& x, ObId ob, Part p) {
+    std::vector<std::string> words;
+    std::string_view name = x.part_name(ob, p);
+    if (is_user_name(name)) {
+        words.emplace_back(name);
+        return words;
+    }
+    const auto& s = x.schema();
+    // (object, part, hom) of each named part that reaches p in one hom.
+    std::vector<std::tuple<std::uint32_t, Part, std::uint32_t>> from;
+    for (HomId f : s.homs_into(ob)) {
+        ObId d = s.hom(f).dom;
+        for (Part q : x.incident(f, p)) {
+            if (is_user_name(x.part_name(d, q))) {
+                from.emplace_back(d.index(), q, f.index());
+            }
+        }
+    }
+    std::sort(from.begin(), from.end());
+    for (auto [d, q, f] : from) {
+        words.push_back(fmt::format("{}({})", s.hom(HomId(f)).name, x.part_name(ObId(d), q)));
+    }
+    words.push_back(x.part_label(ob, p));
+    return words;
+}
+
+std::string part_word(const acset::ACSet& x, ObId ob, Part p) {
+    if (p == kNoPart) {
+        return "_";
+    }
+    return part_words(x, ob, p).front();
+}
+
+namespace {
+
+// The first word other than `avoid`.
+const std::string& word_other_than(const std::vector<std::string>& words, std::string_view avoid) {
+    for (const auto& w : words) {
+        if (w != avoid) {
+            return w;
+        }
+    }
+    return words.back();
+}
+
+} // namespace
+
+std::string part_statement(const acset::ACSet& x, ObId ob, Part p) {
+    return fmt::format("{} {}", x.schema().ob(ob).name, part_word(x, ob, p));
+}
+
+std::string hom_statement(const acset::ACSet& x, HomId f, Part p) {
+    const auto& h = x.schema().hom(f);
+    std::string term = fmt::format("{}({})", h.name, part_word(x, h.dom, p));
+    Part q = x.subpart(f, p);
+    if (q == kNoPart) {
+        return term + " == _";
+    }
+    return fmt::format("{} == {}", term, word_other_than(part_words(x, h.codom, q), term));
+}
+
+std::string attr_statement(const acset::ACSet& x, AttrId a, Part p) {
+    const auto& at = x.schema().attr(a);
+    const auto& v = x.subpart(a, p);
+    return fmt::format("{}({}) == {}", at.name, part_word(x, at.dom, p),
+                       v.is_concrete() ? v.to_string() : std::string("?"));
+}
+
+std::vector<std::string> part_statements(const acset::ACSet& x, ObId ob, Part p) {
+    const auto& s = x.schema();
+    std::vector<std::string> out{part_statement(x, ob, p)};
+    for (HomId f : s.homs_from(ob)) {
+        if (x.subpart(f, p) != kNoPart) {
+            out.push_back(hom_statement(x, f, p));
+        }
+    }
+    for (AttrId a : s.attrs_from(ob)) {
+        if (!x.subpart(a, p).is_unset()) {
+            out.push_back(attr_statement(x, a, p));
+        }
+    }
+    return out;
+}
+
+std::string describe_bindings(const hom::ACSetMorphism& m, const acset::ACSet& l,
+                              const acset::ACSet& x) {
+    const auto& s = l.schema();
+    std::vector<std::string> items;
+    for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
+        for (Part p = 0; p < l.num_parts(ObId(o)); ++p) {
+            std::string item = fmt::format("{} ↦ {}", part_word(l, ObId(o), p),
+                                           part_word(x, ObId(o), m.components[o][p]));
+            // Once each: a migrated rule has a part per target type of a source part, all
+            // named alike (block ↦ bread2 for its Object and its Receptacle).
+            if (std::find(items.begin(), items.end(), item) == items.end()) {
+                items.push_back(std::move(item));
+            }
+        }
+    }
+    for (std::uint32_t t = 0; t < s.num_attr_types(); ++t) {
+        AttrTypeId ty(t);
+        for (std::uint32_t j = 0; j < l.num_vars(ty) && j < m.var_components[t].size(); ++j) {
+            items.push_back(fmt::format("{} ↦ {}", l.value_label(ty, acset::Value::var(j)),
+                                        x.value_label(ty, m.var_components[t][j])));
+        }
+    }
+    return fmt::format("{}", fmt::join(items, ", "));
+}
+
+} // namespace catplan::transfer

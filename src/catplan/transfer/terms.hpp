@@ -1,0 +1,53 @@
+#pragma once
+// Words for parts, for people: a part is called by the name a person gave it, else by a term of
+// a part a person named that reaches it in one hom (`isEmpty(empty)` for the hand-empty marker,
+// `plateIsReceptacle(plate)`), else by its label (`#3`). Goal statements, the bindings of a
+// transferred step and the differences of a divergent trajectory all name parts this way.
+//
+// Names that catplan makes up are not a person's: a part's label (`#7`, given to an unnamed part
+// of the initial state so that names can carry every part) and the name of a part a step created
+// that its rule does not name (`block@2`: a Block created by step 2). They contain '#' or '@',
+// which no identifier of the language or of PDDL can.
+
+#include "catplan/acset/acset.hpp"
+#include "catplan/hom/morphism.hpp"
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace catplan::transfer {
+
+/// Whether a part name was written by a person (not empty, and not one catplan makes up).
+bool is_user_name(std::string_view name);
+
+/// Words for part p of ob in x, best first: its name when a person wrote it; else `f(n)` for
+/// every hom f and part named n by a person with f(that part) == p, ordered by the part's object,
+/// the part, then f; last the part's name or label (so the list is never empty).
+std::vector<std::string> part_words(const acset::ACSet& x, ObId ob, Part p);
+
+/// The first of part_words (`_` for kNoPart).
+std::string part_word(const acset::ACSet& x, ObId ob, Part p);
+
+/// The statement that part p of ob exists: `Block A`.
+std::string part_statement(const acset::ACSet& x, ObId ob, Part p);
+
+/// The statement of hom f at part p: `on_l(x1) == E`; its value is named by its first word other
+/// than the term itself (`isHolding(gripper) == isEmpty(empty)`, not `== isHolding(gripper)`).
+std::string hom_statement(const acset::ACSet& x, HomId f, Part p);
+
+/// The statement of attribute a at part p: `hasColor(A) == "purple"`, or `hasColor(A) == ?` when
+/// the value is unknown (a variable).
+std::string attr_statement(const acset::ACSet& x, AttrId a, Part p);
+
+/// Everything x states about part p of ob: the part, then each set hom and each set attribute
+/// in schema order.
+std::vector<std::string> part_statements(const acset::ACSet& x, ObId ob, Part p);
+
+/// A match m : L -> X in words, each part of L once with the part of X it goes to, both called
+/// by part_word (`block ↦ E, isEmpty(empty) ↦ isEmpty(empty)`), then each variable of L with its
+/// value.
+std::string describe_bindings(const hom::ACSetMorphism& m, const acset::ACSet& l,
+                              const acset::ACSet& x);
+
+} // namespace catplan::transfer

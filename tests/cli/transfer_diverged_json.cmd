@@ -1,0 +1,1 @@
+transfer tests/cli/transfer/relabel.cp --map Sorted --problem Restock --goal Stocked --no-timing --plan tests/cli/transfer/relabel.plan --format json
