@@ -1,6 +1,6 @@
 # The two commands of the README. Both install what is missing (tools/install-deps.sh) and build
 # what is needed; the CMake presets hold the build settings.
-.PHONY: all deps demo test build release bench format check-format check-layers clean python \
+.PHONY: all deps demo test build release bench format check-format check-layers check-sizes clean python \
 	install
 
 JOBS ?= 2
@@ -56,6 +56,9 @@ check-format:
 
 check-layers:
 	python3 tools/check_layers.py
+
+check-sizes:
+	python3 tools/check_sizes.py
 
 clean:
 	rm -rf build

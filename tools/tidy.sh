@@ -17,6 +17,11 @@ else
         rev=HEAD~1
     fi
     base=$(git merge-base "$rev" HEAD)
+    # On REV itself (a clean clone of main, as CI runs), what the last commit changed: for a
+    # merge, what it brought in.
+    if [ "$base" = "$(git rev-parse HEAD)" ] && git rev-parse -q --verify HEAD^1 >/dev/null; then
+        base=HEAD^1
+    fi
     changed=$({ git diff --name-only --diff-filter=d "$base" -- src tests bench
                 git ls-files --others --exclude-standard -- src tests bench; } | grep -E '\.(cpp|hpp)$' || true)
 fi

@@ -1,6 +1,7 @@
 // Plan transfer along an ontology map (the paper's Algorithm 1): catplan.transfer, the Transfer
 // result with its steps, goal satisfaction and timings, replanning, and the HTML report.
 
+#include "catplan/base/process.hpp"
 #include "catplan/report/report.hpp"
 #include "catplan/transfer/transfer.hpp"
 
@@ -124,7 +125,7 @@ PyTransfer run_transfer(const PyMap& map, const PyProblem& problem, const py::ha
     auto options = search_options(search, inter);
     auto t = std::make_shared<transfer::TransferResult>(
         transfer::transfer_plan(*map.ptr, *problem.ptr, r.plan, o));
-    r.transfer_peak_kib = transfer::peak_rss_kib();
+    r.transfer_peak_kib = catplan::peak_rss_kib();
     if (replan && t->target_domain.domain != nullptr && t->target_initial && t->target_goal) {
         try {
             r.replan = std::make_shared<const transfer::Replan>(transfer::replan(*t, options));

@@ -506,6 +506,184 @@ int cmd_plan(const PlanArgs& a, std::ostream& out, std::ostream& err) {
     return rc;
 }
 
+// The commands on states and schemas: check, show, homs. The arguments live as long as the
+// table's functions that read them.
+void add_state_commands(CLI::App& app, CommandTable& table) {
+    struct Args {
+        std::vector<std::string> check_files;
+        std::string show_file, show_name;
+        HomsArgs homs_args;
+    };
+
+    auto args = std::make_shared<Args>();
+    auto* check = app.add_subcommand("check", "Parse and validate files; one summary line per "
+                                              "declaration");
+    check->add_option("FILE", args->check_files, "language files (.cp)")->required();
+
+    auto* show = app.add_subcommand("show", "Print a state as tables or a schema as lists");
+    show->add_option("FILE", args->show_file)->required();
+    show->add_option("NAME", args->show_name, "a schema or instance declared in FILE")->required();
+
+    auto* homs = app.add_subcommand("homs", "Find homomorphisms between two instances "
+                                            "(exit 1 when there are none)");
+    homs->add_option("FILE", args->homs_args.file)->required();
+    homs->add_option("A", args->homs_args.from, "domain instance")->required();
+    homs->add_option("B", args->homs_args.to, "codomain instance")->required();
+    homs->add_flag("--monic", args->homs_args.monic, "injective on every object");
+    homs->add_flag("--iso", args->homs_args.iso, "isomorphisms only");
+    auto* count_flag = homs->add_flag("--count", args->homs_args.count, "print how many there are");
+    homs->add_flag("--all", args->homs_args.all, "print all of them (default: the first)")
+        ->excludes(count_flag);
+    homs->add_option("--max", args->homs_args.max, "with --all, stop after this many")
+        ->check(positive_count());
+
+    using O = std::ostream;
+    table.add(check, [args](O& o, O& e) { return cmd_check(args->check_files, o, e); });
+    table.add(show,
+              [args](O& o, O& e) { return cmd_show(args->show_file, args->show_name, o, e); });
+    table.add(homs, [args](O& o, O& e) { return cmd_homs(args->homs_args, o, e); });
+}
+
+// Catlab's ACSet JSON: json export, json import.
+void add_json_commands(CLI::App& app, CommandTable& table) {
+    struct Args {
+        std::string export_file, export_name, export_output;
+        bool export_pretty = false;
+        std::vector<std::string> import_args;
+        std::string import_name, import_output;
+    };
+
+    auto args = std::make_shared<Args>();
+    auto* json_cmd = app.add_subcommand("json", "Catlab ACSet JSON interop");
+    json_cmd->require_subcommand(1);
+    auto* json_export = json_cmd->add_subcommand("export", "Write a schema or instance as JSON");
+    json_export->add_option("FILE", args->export_file)->required();
+    json_export->add_option("NAME", args->export_name)->required();
+    json_export->add_flag("--pretty", args->export_pretty, "indent the JSON");
+    json_export->add_option("-o,--output", args->export_output,
+                            "write to this file instead of stdout");
+    auto* json_import = json_cmd->add_subcommand(
+        "import", "Read Catlab JSON and print it in the language: SCHEMA_FILE SCHEMA JSON_FILE for "
+                  "an instance, or JSON_FILE alone for a schema");
+    json_import->add_option("ARGS", args->import_args, "SCHEMA_FILE SCHEMA JSON_FILE | JSON_FILE")
+        ->required()
+        ->expected(1, 3);
+    json_import->add_option("--name", args->import_name, "name of the declaration printed");
+    json_import->add_option("-o,--output", args->import_output,
+                            "write to this file instead of stdout");
+
+    using O = std::ostream;
+    table.add(json_export, [args](O& o, O& e) {
+        return cmd_json_export(args->export_file, args->export_name, args->export_pretty,
+                               args->export_output, o, e);
+    });
+    table.add(json_import, [args](O& o, O& e) {
+        return cmd_json_import(args->import_args, args->import_name, args->import_output, o, e);
+    });
+}
+
+// dot: Graphviz pictures of schemas, states, rules and maps.
+void add_dot_command(CLI::App& app, CommandTable& table) {
+    struct Args {
+        std::string dot_file, dot_name, dot_output;
+        bool dot_lr = false;
+    };
+
+    auto args = std::make_shared<Args>();
+    auto* dot_cmd = app.add_subcommand(
+        "dot",
+        "Write Graphviz DOT for a schema, an instance, a rule or an ontology map (render with "
+        "`dot -Tsvg`)");
+    dot_cmd->add_option("FILE", args->dot_file)->required();
+    dot_cmd
+        ->add_option("NAME", args->dot_name,
+                     "a schema, an instance, a rule (also one of a domain) or a map")
+        ->required();
+    dot_cmd->add_flag("--lr", args->dot_lr, "lay schemas and states out left to right");
+    dot_cmd->add_option("-o,--output", args->dot_output, "write to this file instead of stdout");
+
+    using O = std::ostream;
+    table.add(dot_cmd, [args](O& o, O& e) {
+        return cmd_dot(args->dot_file, args->dot_name, args->dot_lr, args->dot_output, o, e);
+    });
+}
+
+// Plans: validate, plan.
+void add_plan_commands(CLI::App& app, CommandTable& table) {
+    struct Args {
+        ValidateArgs validate_args;
+        PlanArgs plan_args;
+    };
+
+    auto args = std::make_shared<Args>();
+    auto* validate = app.add_subcommand(
+        "validate", "Replay a plan on a problem and check its goal (exit 1 when invalid)");
+    validate
+        ->add_option("FILE", args->validate_args.files,
+                     "language file (.cp), or DOMAIN.pddl PROBLEM.pddl PLAN (an IPC plan)")
+        ->required()
+        ->expected(-1);
+    validate->add_option("--domain", args->validate_args.domain,
+                         "the domain (default: the problem's domain)");
+    validate->add_option("--problem", args->validate_args.problem,
+                         "the problem declared in FILE (required for a .cp file)");
+    validate->add_option("--plan", args->validate_args.plan_file,
+                         "plan file: one step per line (required for a .cp file)");
+    validate->add_flag("--trace", args->validate_args.trace, "print every state as tables");
+
+    auto* plan_cmd = app.add_subcommand(
+        "plan", "Search for a plan (exit 1 when provably none, 4 when a limit stops the search)");
+    plan_cmd
+        ->add_option("FILE", args->plan_args.files,
+                     "language file (.cp), or DOMAIN.pddl PROBLEM.pddl")
+        ->required()
+        ->expected(-1);
+    plan_cmd->add_option("--domain", args->plan_args.domain,
+                         "the domain (default: the problem's domain)");
+    plan_cmd->add_option("--problem", args->plan_args.problem,
+                         "the problem declared in FILE (required for a .cp file)");
+    plan_cmd
+        ->add_option("--search", args->plan_args.search,
+                     "lama (lazy greedy, hff and lmcount, preferred operators), lazy (lazy "
+                     "greedy with --heuristic), gbfs (eager greedy), astar (optimal with an "
+                     "admissible heuristic) or bfs (shortest plans, small problems)")
+        ->check(CLI::IsMember({"lama", "lazy", "gbfs", "astar", "bfs"}))
+        ->capture_default_str();
+    plan_cmd
+        ->add_option("--heuristic", args->plan_args.heuristic,
+                     "hff, hadd, hmax, lmcut (admissible), lmcount, goalcount or blind; default: "
+                     "hff for gbfs and lazy, lmcut for astar")
+        ->check(CLI::IsMember(
+            {"default", "blind", "goalcount", "hadd", "hmax", "hff", "lmcut", "lmcount"}))
+        ->capture_default_str();
+    plan_cmd->add_flag("--anytime", args->plan_args.anytime,
+                       "after the first plan, search for shorter ones until --max-time");
+    plan_cmd->add_flag("--no-ground", args->plan_args.no_ground,
+                       "search C-sets even where the problem compiles into a ground task");
+    plan_cmd->add_option("--max-nodes", args->plan_args.max_nodes, "stop after expanding N states")
+        ->check(positive_count());
+    plan_cmd
+        ->add_option("--max-time", args->plan_args.max_time,
+                     "stop after S seconds of wall time, every phase included (default: none)")
+        ->check(positive_number("seconds"));
+    plan_cmd
+        ->add_option("--max-memory", args->plan_args.max_memory_mb,
+                     "stop when the process's resident memory reaches MB megabytes (default: 75% "
+                     "of this machine's memory)")
+        ->check(positive_number("megabytes"));
+    plan_cmd->add_option("-o,--output", args->plan_args.output, "write the plan to this file");
+    plan_cmd->add_option("--format", args->plan_args.format, "text or json (plan and statistics)")
+        ->check(CLI::IsMember({"text", "json"}))
+        ->capture_default_str();
+    plan_cmd->add_flag(
+        "--no-timing", args->plan_args.no_timing,
+        "no progress reports, no time or memory in the statistics (reproducible output)");
+
+    using O = std::ostream;
+    table.add(validate, [args](O& o, O& e) { return cmd_validate(args->validate_args, o, e); });
+    table.add(plan_cmd, [args](O& o, O& e) { return cmd_plan(args->plan_args, o, e); });
+}
+
 } // namespace
 
 int run(int argc, char** argv, std::ostream& out, std::ostream& err) {
@@ -516,144 +694,11 @@ int run(int argc, char** argv, std::ostream& out, std::ostream& err) {
     app.require_subcommand(1);
     app.set_version_flag("--version", "catplan 0.1.0");
 
-    std::vector<std::string> check_files;
-    auto* check = app.add_subcommand("check", "Parse and validate files; one summary line per "
-                                              "declaration");
-    check->add_option("FILE", check_files, "language files (.cp)")->required();
-
-    std::string show_file, show_name;
-    auto* show = app.add_subcommand("show", "Print a state as tables or a schema as lists");
-    show->add_option("FILE", show_file)->required();
-    show->add_option("NAME", show_name, "a schema or instance declared in FILE")->required();
-
-    HomsArgs homs_args;
-    auto* homs = app.add_subcommand("homs", "Find homomorphisms between two instances "
-                                            "(exit 1 when there are none)");
-    homs->add_option("FILE", homs_args.file)->required();
-    homs->add_option("A", homs_args.from, "domain instance")->required();
-    homs->add_option("B", homs_args.to, "codomain instance")->required();
-    homs->add_flag("--monic", homs_args.monic, "injective on every object");
-    homs->add_flag("--iso", homs_args.iso, "isomorphisms only");
-    auto* count_flag = homs->add_flag("--count", homs_args.count, "print how many there are");
-    homs->add_flag("--all", homs_args.all, "print all of them (default: the first)")
-        ->excludes(count_flag);
-    homs->add_option("--max", homs_args.max, "with --all, stop after this many")
-        ->check(positive_count());
-
-    auto* json_cmd = app.add_subcommand("json", "Catlab ACSet JSON interop");
-    json_cmd->require_subcommand(1);
-    std::string export_file, export_name, export_output;
-    bool export_pretty = false;
-    auto* json_export = json_cmd->add_subcommand("export", "Write a schema or instance as JSON");
-    json_export->add_option("FILE", export_file)->required();
-    json_export->add_option("NAME", export_name)->required();
-    json_export->add_flag("--pretty", export_pretty, "indent the JSON");
-    json_export->add_option("-o,--output", export_output, "write to this file instead of stdout");
-    std::vector<std::string> import_args;
-    std::string import_name, import_output;
-    auto* json_import = json_cmd->add_subcommand(
-        "import", "Read Catlab JSON and print it in the language: SCHEMA_FILE SCHEMA JSON_FILE for "
-                  "an instance, or JSON_FILE alone for a schema");
-    json_import->add_option("ARGS", import_args, "SCHEMA_FILE SCHEMA JSON_FILE | JSON_FILE")
-        ->required()
-        ->expected(1, 3);
-    json_import->add_option("--name", import_name, "name of the declaration printed");
-    json_import->add_option("-o,--output", import_output, "write to this file instead of stdout");
-
-    ValidateArgs validate_args;
-    std::string dot_file, dot_name, dot_output;
-    bool dot_lr = false;
-    auto* dot_cmd = app.add_subcommand(
-        "dot",
-        "Write Graphviz DOT for a schema, an instance, a rule or an ontology map (render with "
-        "`dot -Tsvg`)");
-    dot_cmd->add_option("FILE", dot_file)->required();
-    dot_cmd
-        ->add_option("NAME", dot_name,
-                     "a schema, an instance, a rule (also one of a domain) or a map")
-        ->required();
-    dot_cmd->add_flag("--lr", dot_lr, "lay schemas and states out left to right");
-    dot_cmd->add_option("-o,--output", dot_output, "write to this file instead of stdout");
-
-    auto* validate = app.add_subcommand(
-        "validate", "Replay a plan on a problem and check its goal (exit 1 when invalid)");
-    validate
-        ->add_option("FILE", validate_args.files,
-                     "language file (.cp), or DOMAIN.pddl PROBLEM.pddl PLAN (an IPC plan)")
-        ->required()
-        ->expected(-1);
-    validate->add_option("--domain", validate_args.domain,
-                         "the domain (default: the problem's domain)");
-    validate->add_option("--problem", validate_args.problem,
-                         "the problem declared in FILE (required for a .cp file)");
-    validate->add_option("--plan", validate_args.plan_file,
-                         "plan file: one step per line (required for a .cp file)");
-    validate->add_flag("--trace", validate_args.trace, "print every state as tables");
-
-    PlanArgs plan_args;
-    auto* plan_cmd = app.add_subcommand(
-        "plan", "Search for a plan (exit 1 when provably none, 4 when a limit stops the search)");
-    plan_cmd
-        ->add_option("FILE", plan_args.files, "language file (.cp), or DOMAIN.pddl PROBLEM.pddl")
-        ->required()
-        ->expected(-1);
-    plan_cmd->add_option("--domain", plan_args.domain,
-                         "the domain (default: the problem's domain)");
-    plan_cmd->add_option("--problem", plan_args.problem,
-                         "the problem declared in FILE (required for a .cp file)");
-    plan_cmd
-        ->add_option("--search", plan_args.search,
-                     "lama (lazy greedy, hff and lmcount, preferred operators), lazy (lazy "
-                     "greedy with --heuristic), gbfs (eager greedy), astar (optimal with an "
-                     "admissible heuristic) or bfs (shortest plans, small problems)")
-        ->check(CLI::IsMember({"lama", "lazy", "gbfs", "astar", "bfs"}))
-        ->capture_default_str();
-    plan_cmd
-        ->add_option("--heuristic", plan_args.heuristic,
-                     "hff, hadd, hmax, lmcut (admissible), lmcount, goalcount or blind; default: "
-                     "hff for gbfs and lazy, lmcut for astar")
-        ->check(CLI::IsMember(
-            {"default", "blind", "goalcount", "hadd", "hmax", "hff", "lmcut", "lmcount"}))
-        ->capture_default_str();
-    plan_cmd->add_flag("--anytime", plan_args.anytime,
-                       "after the first plan, search for shorter ones until --max-time");
-    plan_cmd->add_flag("--no-ground", plan_args.no_ground,
-                       "search C-sets even where the problem compiles into a ground task");
-    plan_cmd->add_option("--max-nodes", plan_args.max_nodes, "stop after expanding N states")
-        ->check(positive_count());
-    plan_cmd
-        ->add_option("--max-time", plan_args.max_time,
-                     "stop after S seconds of wall time, every phase included (default: none)")
-        ->check(positive_number("seconds"));
-    plan_cmd
-        ->add_option("--max-memory", plan_args.max_memory_mb,
-                     "stop when the process's resident memory reaches MB megabytes (default: 75% "
-                     "of this machine's memory)")
-        ->check(positive_number("megabytes"));
-    plan_cmd->add_option("-o,--output", plan_args.output, "write the plan to this file");
-    plan_cmd->add_option("--format", plan_args.format, "text or json (plan and statistics)")
-        ->check(CLI::IsMember({"text", "json"}))
-        ->capture_default_str();
-    plan_cmd->add_flag(
-        "--no-timing", plan_args.no_timing,
-        "no progress reports, no time or memory in the statistics (reproducible output)");
-
     CommandTable table;
-    using O = std::ostream;
-    table.add(check, [&](O& o, O& e) { return cmd_check(check_files, o, e); });
-    table.add(show, [&](O& o, O& e) { return cmd_show(show_file, show_name, o, e); });
-    table.add(homs, [&](O& o, O& e) { return cmd_homs(homs_args, o, e); });
-    table.add(json_export, [&](O& o, O& e) {
-        return cmd_json_export(export_file, export_name, export_pretty, export_output, o, e);
-    });
-    table.add(json_import, [&](O& o, O& e) {
-        return cmd_json_import(import_args, import_name, import_output, o, e);
-    });
-    table.add(dot_cmd,
-              [&](O& o, O& e) { return cmd_dot(dot_file, dot_name, dot_lr, dot_output, o, e); });
-    table.add(validate, [&](O& o, O& e) { return cmd_validate(validate_args, o, e); });
-    table.add(plan_cmd, [&](O& o, O& e) { return cmd_plan(plan_args, o, e); });
-
+    add_state_commands(app, table);
+    add_json_commands(app, table);
+    add_dot_command(app, table);
+    add_plan_commands(app, table);
     add_migrate_commands(app, table);
     add_transfer_commands(app, table);
     add_pddl_commands(app, table);

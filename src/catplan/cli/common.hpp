@@ -4,6 +4,7 @@
 // subcommands lives in its own file and adds itself to the table (commands.cpp, *_commands.cpp).
 
 #include "catplan/base/diagnostic.hpp"
+#include "catplan/base/process.hpp"
 #include "catplan/base/source.hpp"
 #include "catplan/lang/module.hpp"
 #include "catplan/plan/domain.hpp"

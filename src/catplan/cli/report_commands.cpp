@@ -39,7 +39,7 @@ int cmd_report(const ReportArgs& a, std::ostream& out, std::ostream& err) {
     r.problem = in->problem.get();
     r.plan = &in->plan;
     r.transfer = &t;
-    r.transfer_peak_kib = transfer::peak_rss_kib();
+    r.transfer_peak_kib = catplan::peak_rss_kib();
     r.no_timing = a.no_timing;
     r.dot.left_to_right = a.lr;
     std::optional<transfer::Replan> rp;

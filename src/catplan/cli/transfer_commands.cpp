@@ -264,7 +264,7 @@ int cmd_transfer(const TransferCommandArgs& a, std::ostream& out, std::ostream& 
     options.follow_source = a.follow_source;
     Outcome r;
     r.t = transfer::transfer_plan(*in->map, *in->problem, in->plan, options);
-    r.transfer_peak_kib = transfer::peak_rss_kib();
+    r.transfer_peak_kib = catplan::peak_rss_kib();
     if (a.in.replan) {
         r.replan = transfer::replan(r.t, replan_options(a.in));
     }

@@ -208,88 +208,78 @@ Term translate(const SchemaMap& first, const Term& term) {
     return out;
 }
 
-Result<SchemaMap> first_delta(const SchemaMap& first, const SchemaMap& second) {
-    const schema::Schema& t2 = *second.target();
+// The query of the composite at an object: q2's variables over first's images, q2's shape's
+// structure as equations.
+Result<Query> composite_query(const SchemaMap& first, const Query& q2) {
     const schema::Schema& t1 = *first.target();
-    SchemaMap out(second.target(), first.source());
-    for (std::uint32_t a = 0; a < t2.num_attr_types(); ++a) {
-        if (auto mid = second.attr_type_image(AttrTypeId(a))) {
-            if (auto img = first.attr_type_image(*mid)) {
-                out.map_attr_type(AttrTypeId(a), *img);
-            } else {
-                out.map_attr_type(AttrTypeId(a), first.attr_type_kind(*mid));
-            }
+    Query q(first.source());
+    if (q2.is_empty()) {
+        q.set_empty();
+    }
+    for (const QueryNode& n : q2.nodes()) {
+        if (!n.is_value) {
+            q.add_variable(n.name, first.plain_ob(n.ob), n.range);
+        } else if (auto img = first.attr_type_image(n.type)) {
+            q.add_value_variable(n.name, *img, n.range);
         } else {
-            out.map_attr_type(AttrTypeId(a), second.attr_type_kind(AttrTypeId(a)));
+            return fail("value variable '" + n.name + "' is over '" + t1.attr_type(n.type).name +
+                        "', which is sent to a value kind alone");
         }
     }
-    // Queries: the same variables over first's images, the shape's structure as equations.
-    for (std::uint32_t c = 0; c < t2.num_obs(); ++c) {
-        const Query& q2 = second.query(ObId(c));
-        Query q(first.source());
-        if (q2.is_empty()) {
-            q.set_empty();
+    // A value variable fixed to a literal keeps its literal.
+    for (std::size_t n = 0; n < q2.nodes().size(); ++n) {
+        QueryElement el = q2.locate_node(n);
+        if (el.is_value && el.value.is_concrete()) {
+            q.add_equation(Term::path(q2.nodes()[n].name), Term::constant(el.value));
         }
-        for (const QueryNode& n : q2.nodes()) {
-            if (!n.is_value) {
-                q.add_variable(n.name, first.plain_ob(n.ob), n.range);
-            } else if (auto img = first.attr_type_image(n.type)) {
-                q.add_value_variable(n.name, *img, n.range);
-            } else {
-                return fail("value variable '" + n.name + "' is over '" +
-                            t1.attr_type(n.type).name + "', which is sent to a value kind alone");
-            }
-        }
-        // A value variable fixed to a literal keeps its literal.
-        for (std::size_t n = 0; n < q2.nodes().size(); ++n) {
-            QueryElement el = q2.locate_node(n);
-            if (el.is_value && el.value.is_concrete()) {
-                q.add_equation(Term::path(q2.nodes()[n].name), Term::constant(el.value));
-            }
-        }
-        const ACSet& shape = q2.state();
-        for (std::uint32_t h = 0; h < t1.num_homs(); ++h) {
-            ObId dom = t1.hom(HomId(h)).dom;
-            for (Part p = 0; p < shape.num_parts(dom); ++p) {
-                Part v = shape.subpart(HomId(h), p);
-                if (v == kNoPart) {
-                    continue;
-                }
-                Term lhs = q2.witness(dom, p);
-                lhs.homs.push_back(HomId(h));
-                q.add_equation(translate(first, lhs),
-                               translate(first, q2.witness(t1.hom(HomId(h)).codom, v)));
-            }
-        }
-        for (std::uint32_t a = 0; a < t1.num_attrs(); ++a) {
-            ObId dom = t1.attr(AttrId(a)).dom;
-            AttrTypeId ty = t1.attr(AttrId(a)).codom;
-            for (Part p = 0; p < shape.num_parts(dom); ++p) {
-                const Value& v = shape.subpart(AttrId(a), p);
-                if (v.is_unset()) {
-                    continue;
-                }
-                Term lhs = q2.witness(dom, p);
-                lhs.attr = AttrId(a);
-                Term l = translate(first, lhs);
-                Term r = translate(first, q2.witness_value(ty, v));
-                if (l.is_literal() && r.is_literal()) {
-                    if (!(l.literal == r.literal)) {
-                        q.set_empty(); // a constant attribute fails the literal: no tuples
-                    }
-                    continue;
-                }
-                if (l.is_literal()) {
-                    std::swap(l, r);
-                }
-                if (same_term(l, r)) {
-                    continue;
-                }
-                q.add_equation(l, r);
-            }
-        }
-        out.map_ob(ObId(c), std::move(q));
     }
+    const ACSet& shape = q2.state();
+    for (std::uint32_t h = 0; h < t1.num_homs(); ++h) {
+        ObId dom = t1.hom(HomId(h)).dom;
+        for (Part p = 0; p < shape.num_parts(dom); ++p) {
+            Part v = shape.subpart(HomId(h), p);
+            if (v == kNoPart) {
+                continue;
+            }
+            Term lhs = q2.witness(dom, p);
+            lhs.homs.push_back(HomId(h));
+            q.add_equation(translate(first, lhs),
+                           translate(first, q2.witness(t1.hom(HomId(h)).codom, v)));
+        }
+    }
+    for (std::uint32_t a = 0; a < t1.num_attrs(); ++a) {
+        ObId dom = t1.attr(AttrId(a)).dom;
+        AttrTypeId ty = t1.attr(AttrId(a)).codom;
+        for (Part p = 0; p < shape.num_parts(dom); ++p) {
+            const Value& v = shape.subpart(AttrId(a), p);
+            if (v.is_unset()) {
+                continue;
+            }
+            Term lhs = q2.witness(dom, p);
+            lhs.attr = AttrId(a);
+            Term l = translate(first, lhs);
+            Term r = translate(first, q2.witness_value(ty, v));
+            if (l.is_literal() && r.is_literal()) {
+                if (!(l.literal == r.literal)) {
+                    q.set_empty(); // a constant attribute fails the literal: no tuples
+                }
+                continue;
+            }
+            if (l.is_literal()) {
+                std::swap(l, r);
+            }
+            if (same_term(l, r)) {
+                continue;
+            }
+            q.add_equation(l, r);
+        }
+    }
+    return q;
+}
+
+// The composite's hom images: a path through first's images, or the terms of q2's morphism.
+void composite_homs(const SchemaMap& first, const SchemaMap& second, SchemaMap& out) {
+    const schema::Schema& t2 = *second.target();
     for (std::uint32_t h = 0; h < t2.num_homs(); ++h) {
         const HomImage& im = second.hom_image(HomId(h));
         ObId c2 = t2.hom(HomId(h)).dom, d2 = t2.hom(HomId(h)).codom;
@@ -321,6 +311,11 @@ Result<SchemaMap> first_delta(const SchemaMap& first, const SchemaMap& second) {
         }
         out.map_hom(HomId(h), std::move(terms));
     }
+}
+
+// The composite's attribute images, through first's.
+void composite_attrs(const SchemaMap& first, const SchemaMap& second, SchemaMap& out) {
+    const schema::Schema& t2 = *second.target();
     for (std::uint32_t a = 0; a < t2.num_attrs(); ++a) {
         const AttrImage& im = second.attr_image(AttrId(a));
         const Query& qc = second.query(t2.attr(AttrId(a)).dom);
@@ -345,6 +340,31 @@ Result<SchemaMap> first_delta(const SchemaMap& first, const SchemaMap& second) {
         }
         }
     }
+}
+
+Result<SchemaMap> first_delta(const SchemaMap& first, const SchemaMap& second) {
+    const schema::Schema& t2 = *second.target();
+    SchemaMap out(second.target(), first.source());
+    for (std::uint32_t a = 0; a < t2.num_attr_types(); ++a) {
+        if (auto mid = second.attr_type_image(AttrTypeId(a))) {
+            if (auto img = first.attr_type_image(*mid)) {
+                out.map_attr_type(AttrTypeId(a), *img);
+            } else {
+                out.map_attr_type(AttrTypeId(a), first.attr_type_kind(*mid));
+            }
+        } else {
+            out.map_attr_type(AttrTypeId(a), second.attr_type_kind(AttrTypeId(a)));
+        }
+    }
+    for (std::uint32_t c = 0; c < t2.num_obs(); ++c) {
+        auto q = composite_query(first, second.query(ObId(c)));
+        if (!q) {
+            return fail(q.error());
+        }
+        out.map_ob(ObId(c), std::move(*q));
+    }
+    composite_homs(first, second, out);
+    composite_attrs(first, second, out);
     auto problems = out.finish();
     if (!out.ok()) {
         return fail("the composite map is not valid: " + problems_text(problems));

@@ -367,43 +367,11 @@ std::vector<Symbol> tuple_names(const Query& q, const Tuples& tu, const ACSet& x
     return names;
 }
 
-} // namespace
-
-MigratedState migrate_state(const SchemaMap& f, const ACSet& x) {
-    CATPLAN_ASSERT(f.ok(), "migrate: the schema map is not finished without errors");
+// The hom columns of Δ_F(X): a path's column between plain queries, else each tuple's image
+// looked up among the codomain's tuples.
+void migrate_homs(const SchemaMap& f, const ACSet& x, MigratedState& out) {
     const schema::Schema& t = *f.target();
-    MigratedState out;
-    out.state = ACSet(f.target());
     ACSet& y = out.state;
-    out.tuples.resize(t.num_obs());
-    // Variables: those of X's type T, for every T' sent to T.
-    for (std::uint32_t i = 0; i < t.num_attr_types(); ++i) {
-        if (auto src = f.attr_type_image(AttrTypeId(i))) {
-            for (std::uint32_t j = 0; j < x.num_vars(*src); ++j) {
-                y.add_var(AttrTypeId(i), x.var_name(*src, j));
-            }
-        }
-    }
-    // Tuples and parts; then every column is written whole with set_column.
-    for (std::uint32_t c = 0; c < t.num_obs(); ++c) {
-        const Query& q = f.query(ObId(c));
-        auto tu = std::make_unique<Tuples>();
-        if (q.is_empty()) {
-            tu->mode = Tuples::Mode::Empty;
-        } else if (q.is_plain()) {
-            tu->mode = Tuples::Mode::Plain;
-            tu->ob = q.nodes()[0].ob;
-            tu->count = x.num_parts(tu->ob);
-        } else if (!scan(q, x, *tu)) {
-            general(q, x, *tu);
-        }
-        y.add_parts(ObId(c), tu->count);
-        if (std::vector<Symbol> names = tuple_names(q, *tu, x); !names.empty()) {
-            y.set_part_names(ObId(c), std::move(names));
-        }
-        out.tuples[c] = std::move(tu);
-    }
-    // Homs.
     for (std::uint32_t h = 0; h < t.num_homs(); ++h) {
         HomId fh(h);
         ObId c = t.hom(fh).dom, d = t.hom(fh).codom;
@@ -453,7 +421,12 @@ MigratedState migrate_state(const SchemaMap& f, const ACSet& x) {
         }
         y.set_column(fh, col);
     }
-    // Attributes.
+}
+
+// The attribute columns of Δ_F(X): a constant, a value of the tuple, or a path's value.
+void migrate_attrs(const SchemaMap& f, const ACSet& x, MigratedState& out) {
+    const schema::Schema& t = *f.target();
+    ACSet& y = out.state;
     for (std::uint32_t a = 0; a < t.num_attrs(); ++a) {
         AttrId fa(a);
         ObId c = t.attr(fa).dom;
@@ -507,6 +480,46 @@ MigratedState migrate_state(const SchemaMap& f, const ACSet& x) {
         }
         y.set_column(fa, col);
     }
+}
+
+} // namespace
+
+MigratedState migrate_state(const SchemaMap& f, const ACSet& x) {
+    CATPLAN_ASSERT(f.ok(), "migrate: the schema map is not finished without errors");
+    const schema::Schema& t = *f.target();
+    MigratedState out;
+    out.state = ACSet(f.target());
+    ACSet& y = out.state;
+    out.tuples.resize(t.num_obs());
+    // Variables: those of X's type T, for every T' sent to T.
+    for (std::uint32_t i = 0; i < t.num_attr_types(); ++i) {
+        if (auto src = f.attr_type_image(AttrTypeId(i))) {
+            for (std::uint32_t j = 0; j < x.num_vars(*src); ++j) {
+                y.add_var(AttrTypeId(i), x.var_name(*src, j));
+            }
+        }
+    }
+    // Tuples and parts; then every column is written whole with set_column.
+    for (std::uint32_t c = 0; c < t.num_obs(); ++c) {
+        const Query& q = f.query(ObId(c));
+        auto tu = std::make_unique<Tuples>();
+        if (q.is_empty()) {
+            tu->mode = Tuples::Mode::Empty;
+        } else if (q.is_plain()) {
+            tu->mode = Tuples::Mode::Plain;
+            tu->ob = q.nodes()[0].ob;
+            tu->count = x.num_parts(tu->ob);
+        } else if (!scan(q, x, *tu)) {
+            general(q, x, *tu);
+        }
+        y.add_parts(ObId(c), tu->count);
+        if (std::vector<Symbol> names = tuple_names(q, *tu, x); !names.empty()) {
+            y.set_part_names(ObId(c), std::move(names));
+        }
+        out.tuples[c] = std::move(tu);
+    }
+    migrate_homs(f, x, out);
+    migrate_attrs(f, x, out);
     return out;
 }
 

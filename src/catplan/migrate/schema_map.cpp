@@ -28,6 +28,27 @@ std::string ill_formed_image(const schema::Schema& target, const schema::Schema&
            ob_name(source, p.dom);
 }
 
+// The one query morphism the bindings determine, into image; otherwise why not.
+void determine_morphism(const ACSet& from, const ACSet& to, hom::HomSearchOptions opt, Generator g,
+                        SourceRange range, const std::string& what, HomImage& image,
+                        std::vector<MapProblem>& out) {
+    opt.max_results = 2;
+    auto r = hom::find_homomorphisms(from, to, opt);
+    if (!r.error.empty()) {
+        out.push_back({Severity::Error, MapProblemKind::NotUnique, g, range,
+                       what + ": the query morphism is not determined: " + r.error});
+    } else if (r.count == 0) {
+        out.push_back({Severity::Error, MapProblemKind::WrongEnds, g, range,
+                       what + ": its image is not a morphism of queries (an equation or literal "
+                              "of the codomain's query does not hold in the domain's)"});
+    } else if (r.count > 1) {
+        out.push_back({Severity::Error, MapProblemKind::NotUnique, g, range,
+                       what + ": its image determines more than one query morphism"});
+    } else {
+        image.morphism = std::move(r.morphisms[0]);
+    }
+}
+
 } // namespace
 
 SchemaMap::SchemaMap(SchemaPtr target, SchemaPtr source)
@@ -148,6 +169,48 @@ bool SchemaMap::is_delta() const {
     return true;
 }
 
+// A hom sent to a path: its image between plain queries (true: done, or reported), else the
+// path as the one term of the codomain's query (false: compile the terms).
+bool SchemaMap::compile_hom_path(HomId f, std::vector<MapProblem>& out) {
+    const schema::Schema& t = *target_;
+    auto& e = homs_[f.index()];
+    Generator g{GeneratorKind::Hom, f.index()};
+    ObId c = t.hom(f).dom, d = t.hom(f).codom;
+    const Query& qc = *obs_[c.index()].query;
+    const Query& qd = *obs_[d.index()].query;
+    std::string what = "'" + t.hom(f).name + "'";
+    if (qc.nodes().empty() || qc.nodes()[0].is_value) {
+        out.push_back({Severity::Error, MapProblemKind::WrongEnds, g, e.range,
+                       what + " is sent to a path, but its domain's query has no object "
+                              "variable to start from"});
+        return true;
+    }
+    schema::Path p{qc.nodes()[0].ob, *e.path, std::nullopt};
+    if (!source_->is_well_formed(p)) {
+        out.push_back({Severity::Error, MapProblemKind::WrongEnds, g, e.range,
+                       ill_formed_image(t, *source_, what, c, p)});
+        return true;
+    }
+    if (qc.is_plain() && qd.is_plain()) {
+        ObId end = source_->path_codom_ob(p);
+        if (end != qd.nodes()[0].ob) {
+            out.push_back({Severity::Error, MapProblemKind::WrongEnds, g, e.range,
+                           what + " is sent to " + source_->path_to_string(p) + ", which ends at " +
+                               ob_name(*source_, end) + ", not at " +
+                               ob_name(*source_, qd.nodes()[0].ob)});
+            return true;
+        }
+        if (e.path->empty()) {
+            out.push_back({Severity::Warning, MapProblemKind::IdentityImage, g, e.range,
+                           what + " is sent to an identity"});
+        }
+        e.image.path = *e.path;
+        return true;
+    }
+    e.terms = std::vector<Term>{Term::path(qc.nodes()[0].name, *e.path)};
+    return false;
+}
+
 void SchemaMap::compile_hom(HomId f, std::vector<MapProblem>& out) {
     const schema::Schema& t = *target_;
     auto& e = homs_[f.index()];
@@ -164,36 +227,8 @@ void SchemaMap::compile_hom(HomId f, std::vector<MapProblem>& out) {
         return;
     }
     std::string what = "'" + t.hom(f).name + "'";
-    if (e.path) {
-        if (qc.nodes().empty() || qc.nodes()[0].is_value) {
-            out.push_back({Severity::Error, MapProblemKind::WrongEnds, g, e.range,
-                           what + " is sent to a path, but its domain's query has no object "
-                                  "variable to start from"});
-            return;
-        }
-        schema::Path p{qc.nodes()[0].ob, *e.path, std::nullopt};
-        if (!source_->is_well_formed(p)) {
-            out.push_back({Severity::Error, MapProblemKind::WrongEnds, g, e.range,
-                           ill_formed_image(t, *source_, what, c, p)});
-            return;
-        }
-        if (qc.is_plain() && qd.is_plain()) {
-            ObId end = source_->path_codom_ob(p);
-            if (end != qd.nodes()[0].ob) {
-                out.push_back({Severity::Error, MapProblemKind::WrongEnds, g, e.range,
-                               what + " is sent to " + source_->path_to_string(p) +
-                                   ", which ends at " + ob_name(*source_, end) + ", not at " +
-                                   ob_name(*source_, qd.nodes()[0].ob)});
-                return;
-            }
-            if (e.path->empty()) {
-                out.push_back({Severity::Warning, MapProblemKind::IdentityImage, g, e.range,
-                               what + " is sent to an identity"});
-            }
-            e.image.path = *e.path;
-            return;
-        }
-        e.terms = std::vector<Term>{Term::path(qc.nodes()[0].name, *e.path)};
+    if (e.path && compile_hom_path(f, out)) {
+        return;
     }
     if (!e.terms) {
         return;
@@ -283,21 +318,7 @@ void SchemaMap::compile_hom(HomId f, std::vector<MapProblem>& out) {
     if (bad) {
         return;
     }
-    opt.max_results = 2;
-    auto r = hom::find_homomorphisms(qd_state, qc.state(), opt);
-    if (!r.error.empty()) {
-        out.push_back({Severity::Error, MapProblemKind::NotUnique, g, e.range,
-                       what + ": the query morphism is not determined: " + r.error});
-    } else if (r.count == 0) {
-        out.push_back({Severity::Error, MapProblemKind::WrongEnds, g, e.range,
-                       what + ": its image is not a morphism of queries (an equation or literal "
-                              "of the codomain's query does not hold in the domain's)"});
-    } else if (r.count > 1) {
-        out.push_back({Severity::Error, MapProblemKind::NotUnique, g, e.range,
-                       what + ": its image determines more than one query morphism"});
-    } else {
-        e.image.morphism = std::move(r.morphisms[0]);
-    }
+    determine_morphism(qd_state, qc.state(), std::move(opt), g, e.range, what, e.image, out);
 }
 
 void SchemaMap::compile_attr(AttrId a, std::vector<MapProblem>& out) {
@@ -397,6 +418,48 @@ struct Loc {
     std::optional<AttrId> attr;
 };
 
+// A Loc moved along its suffix as far as the query's shape has the homs.
+Loc canonical(const schema::Schema& s, const Query& q, Loc loc) {
+    const ACSet& st = q.state();
+    while (!loc.suffix.empty() && st.subpart(loc.suffix.front(), loc.part) != kNoPart) {
+        loc.part = st.subpart(loc.suffix.front(), loc.part);
+        loc.ob = s.hom(loc.suffix.front()).codom;
+        loc.suffix.erase(loc.suffix.begin());
+    }
+    return loc;
+}
+
+bool same_loc(const schema::Schema& s, const Loc& a, const Loc& b) {
+    return a.ob == b.ob && a.part == b.part && a.attr == b.attr &&
+           s.paths_equal({a.ob, a.suffix, a.attr}, {b.ob, b.suffix, b.attr});
+}
+
+// The images of one side of an equation: a Loc per object node of the end's query, or an
+// attribute's constant.
+struct Side {
+    bool usable = true;
+    std::vector<Loc> locs;
+    std::optional<Value> constant;
+};
+
+bool same_side(const schema::Schema& s, const Side& a, const Side& b) {
+    if (a.constant.has_value() != b.constant.has_value()) {
+        return false;
+    }
+    if (a.constant) {
+        return *a.constant == *b.constant;
+    }
+    if (a.locs.size() != b.locs.size()) {
+        return false;
+    }
+    for (std::size_t i = 0; i < a.locs.size(); ++i) {
+        if (!same_loc(s, a.locs[i], b.locs[i])) {
+            return false;
+        }
+    }
+    return true;
+}
+
 } // namespace
 
 void SchemaMap::check_equations(std::vector<MapProblem>& out) {
@@ -417,27 +480,6 @@ void SchemaMap::check_equations(std::vector<MapProblem>& out) {
         loc.part = (*im.morphism)(loc.ob, loc.part);
         return loc;
     };
-    auto canonical = [&](const Query& q, Loc loc) {
-        const ACSet& st = q.state();
-        while (!loc.suffix.empty() && st.subpart(loc.suffix.front(), loc.part) != kNoPart) {
-            loc.part = st.subpart(loc.suffix.front(), loc.part);
-            loc.ob = s.hom(loc.suffix.front()).codom;
-            loc.suffix.erase(loc.suffix.begin());
-        }
-        return loc;
-    };
-    auto same = [&](const Loc& a, const Loc& b) {
-        return a.ob == b.ob && a.part == b.part && a.attr == b.attr &&
-               s.paths_equal({a.ob, a.suffix, a.attr}, {b.ob, b.suffix, b.attr});
-    };
-
-    // The images of one side: a Loc per object node of the end's query, or an attribute image.
-    struct Side {
-        bool usable = true;
-        std::vector<Loc> locs;
-        std::optional<Value> constant;
-    };
-
     auto side = [&](const schema::Path& p) {
         Side out_side;
         for (HomId h : p.homs) {
@@ -483,7 +525,7 @@ void SchemaMap::check_equations(std::vector<MapProblem>& out) {
         }
         const Query& qc = *obs_[p.dom.index()].query;
         for (Loc& l : locs) {
-            out_side.locs.push_back(canonical(qc, l));
+            out_side.locs.push_back(canonical(s, qc, l));
         }
         return out_side;
     };
@@ -508,16 +550,7 @@ void SchemaMap::check_equations(std::vector<MapProblem>& out) {
         if (!a.usable || !b.usable) {
             continue;
         }
-        bool equal = a.constant.has_value() == b.constant.has_value();
-        if (equal && a.constant) {
-            equal = *a.constant == *b.constant;
-        } else if (equal) {
-            equal = a.locs.size() == b.locs.size();
-            for (std::size_t i = 0; equal && i < a.locs.size(); ++i) {
-                equal = same(a.locs[i], b.locs[i]);
-            }
-        }
-        if (!equal) {
+        if (!same_side(s, a, b)) {
             Generator g = !eq.lhs.homs.empty()
                               ? Generator{GeneratorKind::Hom, eq.lhs.homs[0].index()}
                               : Generator{GeneratorKind::Attr, eq.lhs.attr->index()};
@@ -531,25 +564,10 @@ void SchemaMap::check_equations(std::vector<MapProblem>& out) {
     }
 }
 
-std::vector<MapProblem> SchemaMap::finish() {
-    std::vector<MapProblem> out = build_problems_;
+// The attribute types, homs and attributes that are not mapped; a hom into the unit query is
+// mapped by the only morphism there is.
+void SchemaMap::unmapped_problems(std::vector<MapProblem>& out) {
     const schema::Schema& t = *target_;
-    for (std::uint32_t i = 0; i < t.num_obs(); ++i) {
-        const auto& e = obs_[i];
-        Generator g{GeneratorKind::Ob, i};
-        if (!e.query) {
-            out.push_back({Severity::Error,
-                           MapProblemKind::Unmapped,
-                           g,
-                           {},
-                           "object '" + t.ob(ObId(i)).name + "' is not mapped"});
-            continue;
-        }
-        for (const QueryProblem& p : e.query->problems()) {
-            out.push_back({Severity::Error, MapProblemKind::BadQuery, g,
-                           p.range.valid() ? p.range : e.range, p.message});
-        }
-    }
     for (std::uint32_t i = 0; i < t.num_attr_types(); ++i) {
         if (!attr_types_[i].set) {
             out.push_back(
@@ -594,6 +612,55 @@ std::vector<MapProblem> SchemaMap::finish() {
                            "attribute '" + t.attr(AttrId(i)).name + "' is not mapped"});
         }
     }
+}
+
+// A value variable that no attribute cell holds could be anything: infinitely many tuples.
+void SchemaMap::free_value_problems(std::vector<MapProblem>& out) const {
+    const schema::Schema& t = *target_;
+    for (std::uint32_t i = 0; i < t.num_obs(); ++i) {
+        const auto& e = obs_[i];
+        if (!e.query || e.query->is_empty()) {
+            continue;
+        }
+        for (std::size_t n = 0; n < e.query->nodes().size(); ++n) {
+            const QueryNode& node = e.query->nodes()[n];
+            if (!node.is_value) {
+                continue;
+            }
+            QueryElement el = e.query->locate_node(n);
+            if (el.value.is_var() &&
+                e.query->state().var_incident(node.type, el.value.var_index()).empty()) {
+                out.push_back({Severity::Error,
+                               MapProblemKind::FreeValueVariable,
+                               {GeneratorKind::Ob, i},
+                               node.range.valid() ? node.range : e.range,
+                               "value variable '" + node.name +
+                                   "' is not reached by any attribute, so it could be anything"});
+            }
+        }
+    }
+}
+
+std::vector<MapProblem> SchemaMap::finish() {
+    std::vector<MapProblem> out = build_problems_;
+    const schema::Schema& t = *target_;
+    for (std::uint32_t i = 0; i < t.num_obs(); ++i) {
+        const auto& e = obs_[i];
+        Generator g{GeneratorKind::Ob, i};
+        if (!e.query) {
+            out.push_back({Severity::Error,
+                           MapProblemKind::Unmapped,
+                           g,
+                           {},
+                           "object '" + t.ob(ObId(i)).name + "' is not mapped"});
+            continue;
+        }
+        for (const QueryProblem& p : e.query->problems()) {
+            out.push_back({Severity::Error, MapProblemKind::BadQuery, g,
+                           p.range.valid() ? p.range : e.range, p.message});
+        }
+    }
+    unmapped_problems(out);
     // First pass: mention every hom image's terms, so that each query has its final shape before
     // any query morphism into or out of it is computed.
     for (std::uint32_t i = 0; i < t.num_homs(); ++i) {
@@ -619,29 +686,7 @@ std::vector<MapProblem> SchemaMap::finish() {
             compile_attr(AttrId(i), out);
         }
     }
-    // A value variable that no attribute cell holds could be anything: infinitely many tuples.
-    for (std::uint32_t i = 0; i < t.num_obs(); ++i) {
-        const auto& e = obs_[i];
-        if (!e.query || e.query->is_empty()) {
-            continue;
-        }
-        for (std::size_t n = 0; n < e.query->nodes().size(); ++n) {
-            const QueryNode& node = e.query->nodes()[n];
-            if (!node.is_value) {
-                continue;
-            }
-            QueryElement el = e.query->locate_node(n);
-            if (el.value.is_var() &&
-                e.query->state().var_incident(node.type, el.value.var_index()).empty()) {
-                out.push_back({Severity::Error,
-                               MapProblemKind::FreeValueVariable,
-                               {GeneratorKind::Ob, i},
-                               node.range.valid() ? node.range : e.range,
-                               "value variable '" + node.name +
-                                   "' is not reached by any attribute, so it could be anything"});
-            }
-        }
-    }
+    free_value_problems(out);
     bool errors = false;
     for (const MapProblem& p : out) {
         errors = errors || p.severity == Severity::Error;

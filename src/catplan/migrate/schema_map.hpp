@@ -176,6 +176,9 @@ private:
     };
 
     void compile_hom(HomId f, std::vector<MapProblem>& out);
+    bool compile_hom_path(HomId f, std::vector<MapProblem>& out);
+    void unmapped_problems(std::vector<MapProblem>& out);
+    void free_value_problems(std::vector<MapProblem>& out) const;
     void compile_attr(AttrId a, std::vector<MapProblem>& out);
     void check_equations(std::vector<MapProblem>& out);
 

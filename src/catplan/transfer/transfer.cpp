@@ -1,5 +1,6 @@
 #include "catplan/transfer/transfer.hpp"
 
+#include "catplan/base/process.hpp"
 #include "catplan/migrate/migration.hpp"
 #include "catplan/plan/validate.hpp"
 #include "catplan/rewrite/dpo.hpp"
@@ -247,8 +248,15 @@ private:
         return &actions_.emplace(name, std::move(a)).first->second;
     }
 
+    // "step 3 unstack(a, b)": the step as users name its action (a PDDL action, not one of its
+    // rules' variants).
     std::string where(std::size_t i) const {
-        return fmt::format("step {} {}", i + 1, plan_.steps[i].to_string());
+        plan::Step step = plan_.steps[i];
+        const auto* own = options_.target_actions.get();
+        if (own != nullptr && own->source_action_name) {
+            step.action = own->source_action_name(step.action);
+        }
+        return fmt::format("step {} {}", i + 1, step.to_string());
     }
 
     bool fail_at(std::size_t i, const std::string& why) {

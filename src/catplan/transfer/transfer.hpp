@@ -35,7 +35,6 @@
 //   if (!t.verdict.valid()) std::cout << t.verdict.reason() << "\n";
 
 #include "catplan/acset/acset.hpp"
-#include "catplan/base/process.hpp"
 #include "catplan/hom/morphism.hpp"
 #include "catplan/migrate/schema_map.hpp"
 #include "catplan/plan/domain.hpp"
@@ -188,8 +187,5 @@ std::string speedup_text(const Replan& r, double transfer_ms);
 /// The edit distance between two step lists (insertions, deletions, substitutions of whole
 /// steps).
 std::size_t edit_distance(const std::vector<plan::Step>& a, const std::vector<plan::Step>& b);
-
-/// The process's peak resident memory in KiB (0 when unknown); base/process.hpp.
-using catplan::peak_rss_kib;
 
 } // namespace catplan::transfer

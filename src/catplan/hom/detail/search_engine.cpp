@@ -81,6 +81,12 @@ public:
 
 private:
     bool prepare();
+    void read_options(std::vector<char>& iso_ob, std::vector<char>& no_bind);
+    bool find_floating(const std::vector<char>& no_bind);
+    bool room_for(const std::vector<char>& iso_ob) const;
+    void allocate();
+    bool restrict_candidates();
+    bool bind_initial();
     bool assign(std::uint32_t ob, Part x, Part y);
     bool taken(std::uint32_t ob, Part y) const;
     bool bind_var(std::uint32_t t, std::uint32_t v, const Value& value);
@@ -418,19 +424,16 @@ bool Engine::emit() {
     return true;
 }
 
-bool Engine::prepare() {
+// The options read into per-object and per-type flags: monic_, monic_t_, and the objects that
+// must be bijective and the types whose variables are not bound.
+void Engine::read_options(std::vector<char>& iso_ob, std::vector<char>& no_bind) {
     std::size_t nobs = s_.num_obs(), ntypes = s_.num_attr_types();
-    CATPLAN_ASSERT(&x_.schema() == &y_.schema() ||
-                       (y_.schema().num_obs() == nobs && y_.schema().num_homs() == s_.num_homs() &&
-                        y_.schema().num_attrs() == s_.num_attrs() &&
-                        y_.schema().num_attr_types() == ntypes),
-                   "hom search between states on different schemas");
     monic_.assign(nobs, opt_.monic_all || opt_.iso ? 1 : 0);
     for (ObId ob : opt_.monic) {
         CATPLAN_ASSERT(ob.index() < nobs, "monic: object out of range");
         monic_[ob.index()] = 1;
     }
-    std::vector<char> iso_ob(nobs, opt_.iso ? 1 : 0);
+    iso_ob.assign(nobs, opt_.iso ? 1 : 0);
     for (ObId ob : opt_.iso_obs) {
         CATPLAN_ASSERT(ob.index() < nobs, "iso_obs: object out of range");
         iso_ob[ob.index()] = 1;
@@ -441,13 +444,18 @@ bool Engine::prepare() {
         CATPLAN_ASSERT(t.index() < ntypes, "monic_attr_types: type out of range");
         monic_t_[t.index()] = 1;
     }
-    std::vector<char> no_bind(ntypes, 0);
+    no_bind.assign(ntypes, 0);
     for (AttrTypeId t : opt_.no_bind) {
         CATPLAN_ASSERT(t.index() < ntypes, "no_bind: type out of range");
         no_bind[t.index()] = 1;
     }
+}
 
-    // Infinitely many morphisms: report before anything else, as Catlab does.
+// The variables of X that no attribute uses (floating_); false, with the error, when one of them
+// could map to any value (infinitely many morphisms, reported before anything else as Catlab
+// does).
+bool Engine::find_floating(const std::vector<char>& no_bind) {
+    std::size_t ntypes = s_.num_attr_types();
     std::vector<std::vector<char>> used(ntypes);
     for (std::size_t t = 0; t < ntypes; ++t) {
         used[t].assign(x_.num_vars(AttrTypeId(static_cast<std::uint32_t>(t))), 0);
@@ -483,8 +491,12 @@ bool Engine::prepare() {
             floating_.emplace_back(t, v);
         }
     }
+    return true;
+}
 
-    // Cardinality: an injective map needs room, a bijective one equal sizes.
+// Cardinality: an injective map needs room, a bijective one equal sizes.
+bool Engine::room_for(const std::vector<char>& iso_ob) const {
+    std::size_t nobs = s_.num_obs(), ntypes = s_.num_attr_types();
     for (std::uint32_t ob = 0; ob < nobs; ++ob) {
         std::size_t nx = x_.num_parts(ObId(ob)), ny = y_.num_parts(ObId(ob));
         if ((monic_[ob] && nx > ny) || (iso_ob[ob] && nx != ny)) {
@@ -497,7 +509,12 @@ bool Engine::prepare() {
             return false;
         }
     }
+    return true;
+}
 
+// The search's tables, sized for X and Y.
+void Engine::allocate() {
+    std::size_t nobs = s_.num_obs(), ntypes = s_.num_attr_types();
     homs_out_.resize(nobs);
     for (std::uint32_t ob = 0; ob < nobs; ++ob) {
         for (HomId f : s_.homs_from(ObId(ob))) {
@@ -535,7 +552,11 @@ bool Engine::prepare() {
         }
     }
     trail_.reserve(total);
+}
 
+// The candidate sets of the options, intersected per part; false when one is empty.
+bool Engine::restrict_candidates() {
+    std::size_t nobs = s_.num_obs();
     bool empty_candidates = false;
     for (const CandidateSet& c : opt_.candidates) {
         std::uint32_t ob = c.ob.index();
@@ -561,10 +582,12 @@ bool Engine::prepare() {
         }
         slot = std::move(allowed);
     }
-    if (empty_candidates) {
-        return false;
-    }
+    return !empty_candidates;
+}
 
+// The initial bindings of variables and parts; false when they are inconsistent.
+bool Engine::bind_initial() {
+    std::size_t nobs = s_.num_obs();
     for (const VarBinding& b : opt_.initial_vars) {
         CATPLAN_ASSERT(!b.value.is_var() || b.value.var_index() < y_.num_vars(b.type),
                        "initial_vars: codomain variable out of range");
@@ -581,6 +604,22 @@ bool Engine::prepare() {
         }
     }
     return true;
+}
+
+bool Engine::prepare() {
+    std::size_t nobs = s_.num_obs(), ntypes = s_.num_attr_types();
+    CATPLAN_ASSERT(&x_.schema() == &y_.schema() ||
+                       (y_.schema().num_obs() == nobs && y_.schema().num_homs() == s_.num_homs() &&
+                        y_.schema().num_attrs() == s_.num_attrs() &&
+                        y_.schema().num_attr_types() == ntypes),
+                   "hom search between states on different schemas");
+    std::vector<char> iso_ob, no_bind;
+    read_options(iso_ob, no_bind);
+    if (!find_floating(no_bind) || !room_for(iso_ob)) {
+        return false;
+    }
+    allocate();
+    return restrict_candidates() && bind_initial();
 }
 
 HomSearchResult Engine::run() {

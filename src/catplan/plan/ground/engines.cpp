@@ -3,6 +3,7 @@
 #include "catplan/plan/ground/space.hpp"
 
 #include <algorithm>
+#include <optional>
 
 namespace catplan::plan::ground {
 
@@ -189,86 +190,133 @@ EngineResult eager_best_first(Space& space, Evaluator& h, bool astar) {
     return {SearchStatus::Unsolvable, {}};
 }
 
-EngineResult lazy_best_first(Space& space, const std::vector<Evaluator*>& hs, bool preferred,
-                             int weight, int bound) {
+namespace {
+
+// The open lists of lazy search: per evaluator one of every successor and, with preferred
+// operators, one of the preferred successors only; taken in turn by the lowest priority (Fast
+// Downward's alternation open list), a preferred list boosted when an evaluator makes progress.
+class LazyOpen {
+public:
     struct Entry {
         StateId parent;
         ActionId action;
     };
 
-    // The open lists: per evaluator one of every successor and, with preferred operators, one of
-    // the preferred successors only; taken in turn by the lowest priority (Fast Downward's
-    // alternation open list).
+    LazyOpen(Space& space, const std::vector<Evaluator*>& hs, bool preferred, int weight, int bound)
+        : space_(space),
+          hs_(hs),
+          preferred_(preferred),
+          weight_(weight),
+          bound_(bound),
+          per_h_(preferred ? 2 : 1),
+          best_(hs.size(), kDeadEnd),
+          values_(hs.size(), 0) {
+        for (std::size_t i = 0; i < hs.size(); ++i) {
+            subs_.push_back({});
+            if (preferred) {
+                subs_.push_back({{}, 0, true});
+            }
+        }
+    }
+
+    /// Evaluates s, then puts its successors into the open lists; false for a dead end.
+    bool expand(StateId parent, ActionId a, StateId s, bool is_new) {
+        space_.applicable(s, ops_);
+        pref_.clear();
+        for (std::size_t i = 0; i < hs_.size(); ++i) {
+            values_[i] = evaluate(space_, *hs_[i], parent, a, s, is_new, &ops_,
+                                  preferred_ ? &pref_ : nullptr);
+            if (values_[i] == kDeadEnd) {
+                space_.node(s).dead = true;
+                ++space_.stats.evaluated;
+                return false;
+            }
+        }
+        ++space_.stats.evaluated;
+        ++space_.stats.expanded;
+        bool progress = false;
+        for (std::size_t i = 0; i < hs_.size(); ++i) {
+            if (values_[i] < best_[i]) {
+                best_[i] = values_[i];
+                progress = true;
+            }
+        }
+        if (progress && preferred_) {
+            for (auto& sub : subs_) {
+                if (sub.preferred_only) {
+                    sub.priority -= 1000;
+                }
+            }
+        }
+        int g = space_.node(s).g;
+        if (bound_ > 0 && g + 1 >= bound_) {
+            return true;
+        }
+        space_.stats.f = values_[0];
+        std::sort(pref_.begin(), pref_.end());
+        for (ActionId op : ops_) {
+            bool p = preferred_ && std::binary_search(pref_.begin(), pref_.end(), op);
+            for (std::size_t i = 0; i < hs_.size(); ++i) {
+                int key = weight_ == 0 ? values_[i] : g + 1 + weight_ * values_[i];
+                subs_[i * per_h_].list.push(key, {s, op});
+                if (p) {
+                    subs_[i * per_h_ + 1].list.push(key, {s, op});
+                }
+            }
+        }
+        return true;
+    }
+
+    /// The next entry of the list whose turn it is; nullopt when every list is empty.
+    std::optional<Entry> pop() {
+        Sub* pick = nullptr;
+        for (auto& sub : subs_) {
+            if (!sub.list.empty() && (pick == nullptr || sub.priority < pick->priority)) {
+                pick = &sub;
+            }
+        }
+        if (pick == nullptr) {
+            return std::nullopt;
+        }
+        ++pick->priority;
+        return pick->list.pop().first;
+    }
+
+    /// The entries waiting in every list.
+    std::size_t size() const {
+        std::size_t n = 0;
+        for (const auto& sub : subs_) {
+            n += sub.list.size();
+        }
+        return n;
+    }
+
+private:
     struct Sub {
         BucketList<Entry> list;
         int priority = 0;
         bool preferred_only = false;
     };
 
-    std::vector<Sub> subs;
-    for (std::size_t i = 0; i < hs.size(); ++i) {
-        subs.push_back({});
-        if (preferred) {
-            subs.push_back({{}, 0, true});
-        }
-    }
-    std::size_t per_h = preferred ? 2 : 1;
-    std::vector<int> best(hs.size(), kDeadEnd);
-    std::vector<int> values(hs.size(), 0);
-    std::vector<ActionId> ops, pref;
+    Space& space_;
+    const std::vector<Evaluator*>& hs_;
+    bool preferred_;
+    int weight_, bound_;
+    std::size_t per_h_;
+    std::vector<Sub> subs_;
+    std::vector<int> best_, values_;
+    std::vector<ActionId> ops_, pref_;
+};
+
+} // namespace
+
+EngineResult lazy_best_first(Space& space, const std::vector<Evaluator*>& hs, bool preferred,
+                             int weight, int bound) {
+    LazyOpen open(space, hs, preferred, weight, bound);
     bool path_dependent =
         std::any_of(hs.begin(), hs.end(), [](const Evaluator* h) { return h->path_dependent(); });
-
-    // Evaluates s, then puts its successors into the open lists; false for a dead end.
-    auto expand = [&](StateId parent, ActionId a, StateId s, bool is_new) {
-        space.applicable(s, ops);
-        pref.clear();
-        for (std::size_t i = 0; i < hs.size(); ++i) {
-            values[i] =
-                evaluate(space, *hs[i], parent, a, s, is_new, &ops, preferred ? &pref : nullptr);
-            if (values[i] == kDeadEnd) {
-                space.node(s).dead = true;
-                ++space.stats.evaluated;
-                return false;
-            }
-        }
-        ++space.stats.evaluated;
-        ++space.stats.expanded;
-        bool progress = false;
-        for (std::size_t i = 0; i < hs.size(); ++i) {
-            if (values[i] < best[i]) {
-                best[i] = values[i];
-                progress = true;
-            }
-        }
-        if (progress && preferred) {
-            for (auto& sub : subs) {
-                if (sub.preferred_only) {
-                    sub.priority -= 1000;
-                }
-            }
-        }
-        int g = space.node(s).g;
-        if (bound > 0 && g + 1 >= bound) {
-            return true;
-        }
-        space.stats.f = values[0];
-        std::sort(pref.begin(), pref.end());
-        for (ActionId op : ops) {
-            bool p = preferred && std::binary_search(pref.begin(), pref.end(), op);
-            for (std::size_t i = 0; i < hs.size(); ++i) {
-                int key = weight == 0 ? values[i] : g + 1 + weight * values[i];
-                subs[i * per_h].list.push(key, {s, op});
-                if (p) {
-                    subs[i * per_h + 1].list.push(key, {s, op});
-                }
-            }
-        }
-        return true;
-    };
-
     StateId root = space.initial();
-    if (!expand(kNone, kNone, root, true)) {
+    if (!open.expand(kNone, kNone, root, true)) {
         return {SearchStatus::Unsolvable, {}};
     }
     if (space.is_goal(root)) {
@@ -278,18 +326,11 @@ EngineResult lazy_best_first(Space& space, const std::vector<Evaluator*>& hs, bo
         if (auto stop = space.limit_reached()) {
             return {*stop, {}};
         }
-        Sub* pick = nullptr;
-        for (auto& sub : subs) {
-            if (!sub.list.empty() && (pick == nullptr || sub.priority < pick->priority)) {
-                pick = &sub;
-            }
-        }
-        if (pick == nullptr) {
+        auto next = open.pop();
+        if (!next) {
             return {SearchStatus::Unsolvable, {}};
         }
-        ++pick->priority;
-        auto [e, key] = pick->list.pop();
-        (void)key;
+        const LazyOpen::Entry e = *next;
         const Node parent = space.node(e.parent);
         if (parent.dead) {
             continue;
@@ -319,14 +360,10 @@ EngineResult lazy_best_first(Space& space, const std::vector<Evaluator*>& hs, bo
         if (space.is_goal(succ->id)) {
             return {SearchStatus::Solved, space.path_to(succ->id)};
         }
-        if (!expand(e.parent, e.action, succ->id, succ->is_new)) {
+        if (!open.expand(e.parent, e.action, succ->id, succ->is_new)) {
             continue;
         }
-        std::size_t open = 0;
-        for (const auto& sub : subs) {
-            open += sub.list.size();
-        }
-        space.stats.frontier = open;
+        space.stats.frontier = open.size();
     }
 }
 
