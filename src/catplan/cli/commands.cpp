@@ -185,7 +185,7 @@ int cmd_homs(const HomsArgs& a, std::ostream& out, std::ostream& err) {
 
 // ---- json -----------------------------------------------------------------------------------
 
-int cmd_json_export(const std::string& file, const std::string& name, bool pretty,
+int cmd_json_export(const std::string& file, const std::string& name, bool pretty, bool names,
                     const std::string& output, std::ostream& out, std::ostream& err) {
     Session s;
     auto m = load(s, file, err);
@@ -202,8 +202,9 @@ int cmd_json_export(const std::string& file, const std::string& name, bool prett
                                name));
         return kBadInput;
     }
-    std::string text = d->kind == lang::DeclKind::Schema ? json::write_schema(*d->schema, pretty)
-                                                         : json::write_acset(*d->instance, pretty);
+    std::string text = d->kind == lang::DeclKind::Schema
+                           ? json::write_schema(*d->schema, pretty)
+                           : json::write_acset(*d->instance, pretty, names);
     return emit(text + "\n", output, out, err);
 }
 
@@ -543,11 +544,14 @@ int run(int argc, char** argv, std::ostream& out, std::ostream& err) {
     auto* json_cmd = app.add_subcommand("json", "Catlab ACSet JSON interop");
     json_cmd->require_subcommand(1);
     std::string export_file, export_name, export_output;
-    bool export_pretty = false;
+    bool export_pretty = false, export_names = false;
     auto* json_export = json_cmd->add_subcommand("export", "Write a schema or instance as JSON");
     json_export->add_option("FILE", export_file)->required();
     json_export->add_option("NAME", export_name)->required();
     json_export->add_flag("--pretty", export_pretty, "indent the JSON");
+    json_export->add_flag("--names", export_names,
+                          "keep part names as \"_name\" keys (read back by catplan; ACSets.jl "
+                          "rejects them)");
     json_export->add_option("-o,--output", export_output, "write to this file instead of stdout");
     std::vector<std::string> import_args;
     std::string import_name, import_output;
@@ -644,7 +648,8 @@ int run(int argc, char** argv, std::ostream& out, std::ostream& err) {
     table.add(show, [&](O& o, O& e) { return cmd_show(show_file, show_name, o, e); });
     table.add(homs, [&](O& o, O& e) { return cmd_homs(homs_args, o, e); });
     table.add(json_export, [&](O& o, O& e) {
-        return cmd_json_export(export_file, export_name, export_pretty, export_output, o, e);
+        return cmd_json_export(export_file, export_name, export_pretty, export_names, export_output,
+                               o, e);
     });
     table.add(json_import, [&](O& o, O& e) {
         return cmd_json_import(import_args, import_name, import_output, o, e);
