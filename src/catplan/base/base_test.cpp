@@ -95,6 +95,59 @@ TEST(Diagnostic, RendersGnuStyleWithCaretAndSortsByLocation) {
                              "      |       ^~~\n");
 }
 
+TEST(Diagnostic, ALongLineIsShownAsAWindowAroundTheColumn) {
+    // A one-line file of a megabyte: the message shows 160 columns around the error, not the line.
+    std::string line(1'000'000, 'a');
+    line.replace(500'000, 3, "Bad");
+    SourceManager sm;
+    auto f = sm.add_buffer("big.json", line);
+    DiagnosticSink sink(sm);
+    sink.error({f, 500'000, 500'003}, "here");
+    sink.error({f, 2, 3}, "near the start");
+    sink.error({f, 999'999, 1'000'000}, "at the end");
+    std::string a60(60, 'a'), a97(97, 'a'), a160(160, 'a');
+    EXPECT_EQ(sink.render(), "big.json:1:3: error: near the start\n"
+                             "    1 | " +
+                                 a160 +
+                                 "...\n"
+                                 "      |   ^\n"
+                                 "big.json:1:500001: error: here\n"
+                                 "    1 | ..." +
+                                 a60 + "Bad" + a97 +
+                                 "...\n"
+                                 "      | " +
+                                 std::string(63, ' ') +
+                                 "^~~\n"
+                                 "big.json:1:1000000: error: at the end\n"
+                                 "    1 | ..." +
+                                 a60 + "a" +
+                                 "\n"
+                                 "      | " +
+                                 std::string(63, ' ') + "^\n");
+}
+
+TEST(Diagnostic, WindowCountsCodePointsAndCapsTheCaretAtTheWindow) {
+    std::string line;
+    for (int i = 0; i < 300; ++i) {
+        line += "→";
+    }
+    SourceManager sm;
+    auto f = sm.add_buffer("u.cp", line);
+    DiagnosticSink sink(sm);
+    // From column 101 (byte 300) to the end: the caret stops where the window does.
+    sink.error({f, 300, static_cast<std::uint32_t>(line.size())}, "long");
+    std::string shown;
+    for (int i = 0; i < 160; ++i) {
+        shown += "→";
+    }
+    EXPECT_EQ(sink.render(), "u.cp:1:101: error: long\n"
+                             "    1 | ..." +
+                                 shown +
+                                 "...\n"
+                                 "      | " +
+                                 std::string(63, ' ') + "^" + std::string(99, '~') + "\n");
+}
+
 } // namespace
 } // namespace catplan
 

@@ -33,6 +33,10 @@ public:
     Diagnostic& error(SourceRange range, std::string message);
     /// Records a warning at a range.
     Diagnostic& warning(SourceRange range, std::string message);
+    /// Records a note at a range (information that is neither an error nor a warning).
+    Diagnostic& note(SourceRange range, std::string message);
+    /// Records a diagnostic made elsewhere (counted as an error if it is one).
+    Diagnostic& add(Diagnostic d);
 
     /// Records an error that belongs to no source text (a missing file, a bad option).
     Diagnostic& error(std::string message) { return error(SourceRange{}, std::move(message)); }

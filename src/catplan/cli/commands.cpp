@@ -185,7 +185,7 @@ int cmd_homs(const HomsArgs& a, std::ostream& out, std::ostream& err) {
 
 // ---- json -----------------------------------------------------------------------------------
 
-int cmd_json_export(const std::string& file, const std::string& name, bool pretty,
+int cmd_json_export(const std::string& file, const std::string& name, bool pretty, bool names,
                     const std::string& output, std::ostream& out, std::ostream& err) {
     Session s;
     auto m = load(s, file, err);
@@ -202,8 +202,9 @@ int cmd_json_export(const std::string& file, const std::string& name, bool prett
                                name));
         return kBadInput;
     }
-    std::string text = d->kind == lang::DeclKind::Schema ? json::write_schema(*d->schema, pretty)
-                                                         : json::write_acset(*d->instance, pretty);
+    std::string text = d->kind == lang::DeclKind::Schema
+                           ? json::write_schema(*d->schema, pretty)
+                           : json::write_acset(*d->instance, pretty, names);
     return emit(text + "\n", output, out, err);
 }
 
@@ -548,7 +549,7 @@ void add_state_commands(CLI::App& app, CommandTable& table) {
 void add_json_commands(CLI::App& app, CommandTable& table) {
     struct Args {
         std::string export_file, export_name, export_output;
-        bool export_pretty = false;
+        bool export_pretty = false, export_names = false;
         std::vector<std::string> import_args;
         std::string import_name, import_output;
     };
@@ -560,6 +561,9 @@ void add_json_commands(CLI::App& app, CommandTable& table) {
     json_export->add_option("FILE", args->export_file)->required();
     json_export->add_option("NAME", args->export_name)->required();
     json_export->add_flag("--pretty", args->export_pretty, "indent the JSON");
+    json_export->add_flag("--names", args->export_names,
+                          "keep part names as \"_name\" keys (read back by catplan; ACSets.jl "
+                          "rejects them)");
     json_export->add_option("-o,--output", args->export_output,
                             "write to this file instead of stdout");
     auto* json_import = json_cmd->add_subcommand(
@@ -575,7 +579,7 @@ void add_json_commands(CLI::App& app, CommandTable& table) {
     using O = std::ostream;
     table.add(json_export, [args](O& o, O& e) {
         return cmd_json_export(args->export_file, args->export_name, args->export_pretty,
-                               args->export_output, o, e);
+                               args->export_names, args->export_output, o, e);
     });
     table.add(json_import, [args](O& o, O& e) {
         return cmd_json_import(args->import_args, args->import_name, args->import_output, o, e);

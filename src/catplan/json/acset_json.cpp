@@ -17,6 +17,9 @@ using OrderedJson = nlohmann::ordered_json;
 
 namespace {
 
+// The key of a row that carries the name of its part or variable (catplan's own; see json.hpp).
+constexpr const char* kNameKey = "_name";
+
 // Catlab writes 1-based ids and 0 for "unset".
 std::int64_t to_json_id(Part p) {
     return p == kNoPart ? 0 : static_cast<std::int64_t>(p) + 1;
@@ -53,7 +56,7 @@ std::string dump(const nlohmann::ordered_json& doc, int indent) {
     return doc.dump(indent, ' ', false, nlohmann::ordered_json::error_handler_t::replace);
 }
 
-std::string write_acset(const ACSet& x, bool pretty) {
+std::string write_acset(const ACSet& x, bool pretty, bool names) {
     const auto& s = x.schema();
     OrderedJson out = OrderedJson::object();
     for (std::uint32_t i = 0; i < s.num_obs(); ++i) {
@@ -62,6 +65,9 @@ std::string write_acset(const ACSet& x, bool pretty) {
         for (Part p = 0; p < x.num_parts(ob); ++p) {
             OrderedJson row = OrderedJson::object();
             row["_id"] = static_cast<std::int64_t>(p) + 1;
+            if (names && !x.part_name(ob, p).empty()) {
+                row[kNameKey] = std::string(x.part_name(ob, p));
+            }
             for (HomId f : s.homs_from(ob)) {
                 row[s.hom(f).name] = to_json_id(x.subpart(f, p));
             }
@@ -78,6 +84,9 @@ std::string write_acset(const ACSet& x, bool pretty) {
         for (std::uint32_t j = 0; j < x.num_vars(t); ++j) {
             OrderedJson row = OrderedJson::object();
             row["_id"] = static_cast<std::int64_t>(j) + 1;
+            if (names && !x.var_name(t, j).empty()) {
+                row[kNameKey] = std::string(x.var_name(t, j));
+            }
             rows.push_back(std::move(row));
         }
         out[s.attr_type(t).name] = std::move(rows);
@@ -105,7 +114,9 @@ public:
           nparts_(s_.num_obs(), 0),
           nvars_(s_.num_attr_types(), 0),
           kinds_(s_.num_attr_types()),
-          kind_sources_(s_.num_attr_types(), nullptr) {
+          kind_sources_(s_.num_attr_types(), nullptr),
+          part_names_(s_.num_obs()),
+          var_names_(s_.num_attr_types()) {
         for (std::uint32_t t = 0; t < s_.num_attr_types(); ++t) {
             kinds_[t] = s_.attr_type(AttrTypeId(t)).kind;
         }
@@ -131,7 +142,12 @@ public:
         if (sink_.num_errors() > errors_before) {
             return std::nullopt;
         }
-        return build(values);
+        ACSet x = build(values);
+        check_equations(x);
+        if (sink_.num_errors() > errors_before) {
+            return std::nullopt;
+        }
+        return x;
     }
 
 private:
@@ -167,17 +183,14 @@ private:
                 *slot = &table;
             }
         }
+        // A missing table has no rows, as ACSets.jl reads it (it adds parts per key present).
         for (std::uint32_t i = 0; i < s_.num_obs(); ++i) {
-            if (ob_tables[i] == nullptr) {
-                report_missing("object", s_.ob(ObId(i)).name, root);
-            } else {
+            if (ob_tables[i] != nullptr) {
                 nparts_[i] = ob_tables[i]->items.size();
             }
         }
         for (std::uint32_t i = 0; i < s_.num_attr_types(); ++i) {
-            if (var_tables[i] == nullptr) {
-                report_missing("attribute type", s_.attr_type(AttrTypeId(i)).name, root);
-            } else {
+            if (var_tables[i] != nullptr) {
                 nvars_[i] = var_tables[i]->items.size();
             }
         }
@@ -192,6 +205,7 @@ private:
                 read_rows(ObId(i), *ob_tables[i]);
             }
         }
+        ob_tables_ = std::move(ob_tables);
     }
 
     static const char* kind_name(schema::GeneratorKind kind) {
@@ -208,13 +222,8 @@ private:
         return "name";
     }
 
-    void report_missing(const char* what, const std::string& name, const Node& root) {
-        sink_.error(root.head(), fmt::format("missing key '{}' ({} of schema '{}'; write [] when "
-                                             "it has no parts)",
-                                             name, what, s_.name()));
-    }
-
-    // Checks a row is an object with "_id" equal to its 1-based position; false if not an object.
+    // Checks a row is an object whose "_id", if any, is its 1-based position (Catlab before 2023
+    // wrote none, and `{}` for a variable); false if not an object.
     bool check_row(const Node& row, std::size_t index, const std::string& table) {
         if (!row.is_object()) {
             sink_.error(row.head(), fmt::format("row {} of '{}' must be an object, found {}",
@@ -222,10 +231,8 @@ private:
             return false;
         }
         const Node* id = row.find("_id");
-        if (id == nullptr) {
-            sink_.error(row.head(), fmt::format("row {} of '{}' has no \"_id\"", index + 1, table));
-        } else if (id->kind != Node::Kind::Int ||
-                   id->integer != static_cast<std::int64_t>(index) + 1) {
+        if (id != nullptr &&
+            (id->kind != Node::Kind::Int || id->integer != static_cast<std::int64_t>(index) + 1)) {
             sink_.error(id->range, fmt::format("\"_id\" of row {} of '{}' must be {} (ids are the "
                                                "1-based row numbers), found {}",
                                                index + 1, table, index + 1, id->describe()));
@@ -241,10 +248,12 @@ private:
                 continue;
             }
             for (std::size_t k = 0; k < row.keys.size(); ++k) {
-                if (row.keys[k] != "_id") {
+                if (row.keys[k] == kNameKey) {
+                    read_name(row.items[k], var_names_[t.index()], j);
+                } else if (row.keys[k] != "_id") {
                     sink_.error(row.key_ranges[k],
                                 fmt::format("unexpected key '{}' in a variable of attribute type "
-                                            "'{}' (only \"_id\" is allowed)",
+                                            "'{}' (only \"_id\" and \"_name\" are allowed)",
                                             row.keys[k], name));
                 }
             }
@@ -261,10 +270,14 @@ private:
             }
             for (std::size_t k = 0; k < row.keys.size(); ++k) {
                 const std::string& key = row.keys[k];
+                const Node& cell = row.items[k];
                 if (key == "_id") {
                     continue;
                 }
-                const Node& cell = row.items[k];
+                if (key == kNameKey) {
+                    read_name(cell, part_names_[ob.index()], p);
+                    continue;
+                }
                 auto gen = s_.find(key);
                 if (gen && gen->kind == schema::GeneratorKind::Hom &&
                     s_.hom(HomId(gen->index)).dom == ob) {
@@ -279,6 +292,17 @@ private:
                 }
             }
         }
+    }
+
+    // A "_name" must be a string; names are labels, so two rows may share one.
+    void read_name(const Node& cell, std::vector<std::string>& names, std::size_t row) {
+        if (cell.kind != Node::Kind::String) {
+            sink_.error(cell.head(),
+                        fmt::format("\"_name\" must be a string, found {}", cell.describe()));
+            return;
+        }
+        names.resize(std::max(names.size(), row + 1));
+        names[row] = cell.string;
     }
 
     void read_hom(HomId f, Part p, const Node& cell) {
@@ -416,6 +440,73 @@ private:
         return Value::var(static_cast<std::uint32_t>(j.integer - 1));
     }
 
+    // Where a path leads from part p: a part (as an integer Value) or an attribute value; nullopt
+    // when a hom on the way is unset, which no equation can be checked against.
+    static std::optional<Value> follow(const ACSet& x, const schema::Path& path, Part p) {
+        for (HomId f : path.homs) {
+            p = x.subpart(f, p);
+            if (p == kNoPart) {
+                return std::nullopt;
+            }
+        }
+        if (!path.attr) {
+            return Value::integer(static_cast<std::int64_t>(p));
+        }
+        const Value& v = x.subpart(*path.attr, p);
+        return v.is_unset() ? std::nullopt : std::optional<Value>(v);
+    }
+
+    std::string describe_end(const schema::Path& path, const Value& v) const {
+        if (path.attr) {
+            return v.is_var() ? fmt::format("variable {} of '{}'", v.var_index() + 1,
+                                            s_.attr_type(s_.attr(*path.attr).codom).name)
+                              : v.to_string();
+        }
+        ObId end = s_.path_codom_ob(path);
+        return fmt::format("{} #{}", s_.ob(end).name, v.as_int() + 1);
+    }
+
+    // The schema's path equations must hold in the state (Catlab's reader does not check them;
+    // a state that breaks them is not an instance of the schema). Each violation is reported at
+    // its row, up to kMaxViolations per equation.
+    void check_equations(const ACSet& x) {
+        static constexpr std::size_t kMaxViolations = 10;
+        for (const auto& eq : s_.equations()) {
+            std::size_t found = 0;
+            ObId dom = eq.lhs.dom;
+            const Node* table = ob_tables_[dom.index()];
+            std::string words = s_.path_to_string(eq.lhs) + " == " + s_.path_to_string(eq.rhs);
+            if (!eq.name.empty()) {
+                words = eq.name + ": " + words;
+            }
+            for (Part p = 0; p < x.num_parts(dom); ++p) {
+                auto l = follow(x, eq.lhs, p), r = follow(x, eq.rhs, p);
+                if (!l || !r || *l == *r) {
+                    continue;
+                }
+                if (++found > kMaxViolations) {
+                    continue;
+                }
+                auto& d = sink_.error(
+                    table->items[p].head(),
+                    fmt::format(
+                        "row {} of '{}' breaks the equation {} of schema '{}': {} gives {}, "
+                        "{} gives {}",
+                        p + 1, s_.ob(dom).name, words, s_.name(), s_.path_to_string(eq.lhs),
+                        describe_end(eq.lhs, *l), s_.path_to_string(eq.rhs),
+                        describe_end(eq.rhs, *r)));
+                if (eq.range.valid()) {
+                    d.notes.emplace_back(eq.range, "the equation is declared here");
+                }
+            }
+            if (found > kMaxViolations) {
+                sink_.error(table->head(),
+                            fmt::format("{} more rows of '{}' break the equation {}",
+                                        found - kMaxViolations, s_.ob(dom).name, words));
+            }
+        }
+    }
+
     ACSet build(const std::vector<Value>& values) {
         schema::SchemaPtr target = schema_;
         bool adjusted = false;
@@ -431,13 +522,18 @@ private:
         }
         ACSet x(target);
         for (std::uint32_t i = 0; i < s_.num_obs(); ++i) {
-            if (nparts_[i] > 0) {
+            const auto& names = part_names_[i];
+            if (names.empty() && nparts_[i] > 0) {
                 x.add_parts(ObId(i), nparts_[i]);
+            }
+            for (std::size_t p = 0; !names.empty() && p < nparts_[i]; ++p) {
+                x.add_part(ObId(i), p < names.size() ? names[p] : std::string_view());
             }
         }
         for (std::uint32_t t = 0; t < s_.num_attr_types(); ++t) {
+            const auto& names = var_names_[t];
             for (std::size_t j = 0; j < nvars_[t]; ++j) {
-                x.add_var(AttrTypeId(t));
+                x.add_var(AttrTypeId(t), j < names.size() ? names[j] : std::string_view());
             }
         }
         for (std::uint32_t f = 0; f < homs_.size(); ++f) {
@@ -462,6 +558,9 @@ private:
     std::vector<const Node*> kind_sources_;
     std::vector<std::vector<std::pair<Part, Part>>> homs_; // by hom: (part, target)
     std::vector<Cell> cells_;
+    std::vector<const Node*> ob_tables_;               // by object; nullptr when missing
+    std::vector<std::vector<std::string>> part_names_; // by object; "" for unnamed
+    std::vector<std::vector<std::string>> var_names_;  // by attribute type
 };
 
 } // namespace

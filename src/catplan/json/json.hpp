@@ -9,9 +9,19 @@
 //   {"V":[{"_id":1},{"_id":2}],"E":[{"_id":1,"src":1,"tgt":2}]}
 //
 // A schema is {"version": ..., "Ob": [{"name"}], "Hom": [{"name","dom","codom"}], "AttrType":
-// [{"name"}], "Attr": [{"name","dom","codom"}], "equations": [{"dom","codom","name","paths"}]}.
-// The format carries no value kinds: reading a state infers the kind of an Unknown attribute type
-// from its values (see read_acset).
+// [{"name","kind"}], "Attr": [{"name","dom","codom"}], "equations": [{"dom","codom","name",
+// "paths"}]}.
+//
+// What Catlab's format lacks, catplan carries in keys ACSets.jl can live with:
+// - the value kind of an attribute type, as "kind" ("Bool", "Int", "Float", "String") in its
+//   "AttrType" entry: ACSets.jl's schema reader reads only "name" there;
+// - the name of a part or variable, as "_name" in its row, written only on request (`names`):
+//   ACSets.jl's instance reader sets every key of a row other than "_id" as a subpart, so a file
+//   meant for Julia is written without them.
+// Reading a state infers the kind of an Unknown attribute type from its values (see read_acset).
+// Reading accepts what older Catlab wrote: rows without "_id" (and `{}` for a variable), and a
+// missing table, which has no rows (as ACSets.jl reads it). A state that breaks one of the
+// schema's path equations is rejected, at the row that breaks it.
 //
 // Readers report every problem as a located Diagnostic (the text must be registered in the
 // SourceManager): syntax, nesting deeper than kMaxNesting (256) arrays and objects, numbers out of
@@ -43,10 +53,10 @@ std::string dump(const nlohmann::json& doc, int indent = -1);
 std::string dump(const nlohmann::ordered_json& doc, int indent = -1);
 
 /// Catlab ACSet JSON of a state (compact unless pretty); floats in shortest round-trip form,
-/// non-finite floats as null; part and variable names are not part of the format.
-std::string write_acset(const acset::ACSet& x, bool pretty = false);
+/// non-finite floats as null; with `names`, each named part and variable gets a "_name" key.
+std::string write_acset(const acset::ACSet& x, bool pretty = false, bool names = false);
 
-/// Catlab schema JSON (kinds of attribute types are not part of the format).
+/// Catlab schema JSON, with the kind of each attribute type that has one as a "kind" key.
 std::string write_schema(const schema::Schema& s, bool pretty = false);
 
 /// Reads a state on `schema` from JSON text registered as file `file` in `sources`; nullopt on

@@ -54,7 +54,12 @@ std::string write_schema(const Schema& s, bool pretty) {
     }
     OrderedJson attr_types = OrderedJson::array();
     for (std::uint32_t i = 0; i < s.num_attr_types(); ++i) {
-        attr_types.push_back({{"name", s.attr_type(AttrTypeId(i)).name}});
+        const auto& t = s.attr_type(AttrTypeId(i));
+        OrderedJson entry = {{"name", t.name}};
+        if (t.kind != schema::ValueKind::Unknown) {
+            entry["kind"] = std::string(schema::to_string(t.kind)); // ACSets.jl reads only "name"
+        }
+        attr_types.push_back(std::move(entry));
     }
     OrderedJson attrs = OrderedJson::array();
     for (std::uint32_t i = 0; i < s.num_attrs(); ++i) {
@@ -209,8 +214,21 @@ private:
 
     void read_attr_type(const Node& e) {
         const Node* name = string_field(e, "name", nullptr, "an attribute type");
+        auto kind = schema::ValueKind::Unknown;
+        if (const Node* k = e.find("kind")) {
+            auto parsed =
+                k->kind == Node::Kind::String ? schema::parse_value_kind(k->string) : std::nullopt;
+            if (parsed) {
+                kind = *parsed;
+            } else {
+                sink_.error(k->head(), fmt::format("\"kind\" of an attribute type must be one of "
+                                                   "\"Bool\", \"Int\", \"Float\", \"String\", "
+                                                   "found {}",
+                                                   k->describe()));
+            }
+        }
         if (name != nullptr && check_new_name(*name)) {
-            s_->add_attr_type(name->string, schema::ValueKind::Unknown, name->range);
+            s_->add_attr_type(name->string, kind, name->range);
         }
     }
 

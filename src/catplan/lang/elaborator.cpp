@@ -14,9 +14,17 @@ using schema::ValueKind;
 bool Elaborator::claim_name(const std::string& name, SourceRange range) {
     auto it = names.find(name);
     if (it != names.end()) {
-        auto& d = sink.error(range, fmt::format("'{}' is already declared", name));
+        // Julia rebinds a name (`M = @migration ...` twice, a local SchGraph after `using
+        // Catlab`): the later declaration wins, and what was elaborated with the earlier one
+        // keeps it.
+        auto& d = sink.warning(range, fmt::format("'{}' is already declared; this later "
+                                                  "declaration replaces it",
+                                                  name));
         d.notes.emplace_back(it->second, "first declared here");
-        return false;
+        it->second = range;
+        module.remove(name);
+        schemas.erase(name);
+        return true;
     }
     names.emplace(name, range);
     return true;
@@ -70,9 +78,11 @@ const char* kind_noun(GeneratorKind k) {
     return "a generator";
 }
 
+// A Julia symbol (`:a`, what Catlab code writes for Symbol attributes) is a String literal.
 bool is_literal(const Expr& e) {
     return e.kind == Expr::Kind::Int || e.kind == Expr::Kind::Float ||
-           e.kind == Expr::Kind::String || e.kind == Expr::Kind::Bool;
+           e.kind == Expr::Kind::String || e.kind == Expr::Kind::Bool ||
+           e.kind == Expr::Kind::Symbol;
 }
 
 ValueKind literal_kind(const Expr& e) {
@@ -82,6 +92,7 @@ ValueKind literal_kind(const Expr& e) {
     case Expr::Kind::Float:
         return ValueKind::Float;
     case Expr::Kind::String:
+    case Expr::Kind::Symbol:
         return ValueKind::String;
     case Expr::Kind::Bool:
         return ValueKind::Bool;

@@ -12,6 +12,11 @@ namespace catplan::lang::detail {
 namespace {
 
 void import(Elaborator& ctx, const MacroCall& form, std::uint32_t file) {
+    if (form.header.size() == 1 && form.header[0].kind == Expr::Kind::Name &&
+        form.header[0].text == "catlab" && !form.has_body && form.assigned.empty()) {
+        import_catlab(ctx);
+        return;
+    }
     if (form.header.size() != 1 || form.header[0].kind != Expr::Kind::String || form.has_body ||
         !form.assigned.empty()) {
         ctx.sink.error(form.range, "expected @import \"path/to/file.cp\"");
@@ -61,6 +66,9 @@ void load_buffer(Elaborator& ctx, std::uint32_t file, const std::string& key, bo
     ctx.import_stack.push_back(key);
     ctx.loaded.insert(key);
     ParsedFile parsed = parse(ctx.sources, file, ctx.sink);
+    if (parsed.catlab_using.valid()) {
+        import_catlab(ctx); // pasted `using Catlab`: Catlab's schemas are in scope, as in Julia
+    }
     for (const auto& form : parsed.forms) {
         if (form.name == "import") {
             import(ctx, form, file);

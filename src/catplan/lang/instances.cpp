@@ -21,14 +21,85 @@ using acset::Value;
 using schema::GeneratorKind;
 using schema::Schema;
 
+// The name in `Schema`, `Schema{T}` or Julia's qualified `Catlab.Graphs.Graph` (its last part).
+const Expr* schema_name_of(const Expr& e) {
+    if (e.kind == Expr::Kind::Name) {
+        return &e;
+    }
+    if (e.is_binary(".") && e.args[1].kind == Expr::Kind::Name) {
+        const Expr* left = &e.args[0];
+        while (left->is_binary(".")) {
+            left = &left->args[0];
+        }
+        return left->kind == Expr::Kind::Name ? &e.args[1] : nullptr;
+    }
+    return nullptr;
+}
+
+// `@acset WeightedGraph{Float64}`: Julia's type parameters are the kinds of the schema's
+// attribute types, in order. The file's own schemas take them as if inferred; an imported
+// schema (whose kinds are fixed) is copied with them. nullptr after an error.
+std::shared_ptr<Schema> with_type_parameters(Elaborator& ctx, const Expr& name,
+                                             std::shared_ptr<Schema> s) {
+    if (name.args.empty()) {
+        return s;
+    }
+    if (name.args.size() != s->num_attr_types()) {
+        ctx.sink.error(name.range, fmt::format("'{}' has {} attribute type{}, but {} type "
+                                               "parameter{} are given",
+                                               s->name(), s->num_attr_types(),
+                                               s->num_attr_types() == 1 ? "" : "s",
+                                               name.args.size(), name.args.size() == 1 ? "" : "s"));
+        return nullptr;
+    }
+    std::vector<std::pair<AttrTypeId, schema::ValueKind>> given;
+    for (std::uint32_t i = 0; i < name.args.size(); ++i) {
+        const Expr& p = name.args[i];
+        AttrTypeId t(i);
+        auto k = p.kind == Expr::Kind::Name && p.args.empty() ? schema::parse_value_kind(p.text)
+                                                              : std::nullopt;
+        if (!k) {
+            ctx.sink.error(p.range, fmt::format("type parameter '{}' is not a value kind (Bool, "
+                                                "Int64, Float64, String or Symbol)",
+                                                to_string(p)));
+            return nullptr;
+        }
+        auto declared = s->attr_type(t).kind;
+        if (declared != schema::ValueKind::Unknown && declared != *k) {
+            ctx.sink.error(p.range, fmt::format("attribute type '{}' has kind {}, not {}",
+                                                s->attr_type(t).name, schema::to_string(declared),
+                                                schema::to_string(*k)));
+            return nullptr;
+        }
+        if (declared == schema::ValueKind::Unknown) {
+            given.emplace_back(t, *k);
+        }
+    }
+    if (given.empty()) {
+        return s;
+    }
+    if (ctx.local_schemas.count(s.get())) {
+        auto& table = ctx.inferred[s.get()];
+        for (auto [t, k] : given) {
+            table.emplace(t.index(), InferredKind{k, name.args[t.index()].range, true});
+        }
+        return s;
+    }
+    auto copy = std::make_shared<Schema>(*s);
+    for (auto [t, k] : given) {
+        copy->set_kind(t, k);
+    }
+    return copy;
+}
+
 bool resolve_instance_header(Elaborator& ctx, const MacroCall& form, std::string& name,
                              SourceRange& range, std::shared_ptr<Schema>& schema) {
     const Expr* schema_name = nullptr;
     if (!form.assigned.empty()) {
         name = form.assigned;
         range = form.assigned_range;
-        if (form.header.size() == 1 && form.header[0].kind == Expr::Kind::Name) {
-            schema_name = &form.header[0];
+        if (form.header.size() == 1) {
+            schema_name = schema_name_of(form.header[0]);
         }
     } else if (form.header.size() == 1 && form.header[0].kind == Expr::Kind::Call &&
                form.header[0].args.size() == 1 && form.header[0].args[0].kind == Expr::Kind::Name) {
@@ -43,6 +114,9 @@ bool resolve_instance_header(Elaborator& ctx, const MacroCall& form, std::string
         return false;
     }
     schema = ctx.lookup_schema(*schema_name, true);
+    if (schema != nullptr) {
+        schema = with_type_parameters(ctx, *schema_name, std::move(schema));
+    }
     return schema != nullptr;
 }
 

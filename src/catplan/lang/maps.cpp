@@ -209,10 +209,7 @@ private:
             // The query with no variables: one tuple in every state.
         } else if (m.name == "cases" || m.name == "coproduct" || m.name == "glue" ||
                    m.name == "colimit") {
-            error(m.name_range, fmt::format("'@{}' is a gluing query, which maps do not support "
-                                            "(only conjunctive ones: @join, @product, @unit, "
-                                            "@empty)",
-                                            m.name));
+            error(m.name_range, gluing_query_message(m.name, t_.ob(c).name));
             return;
         } else {
             error(m.name_range, fmt::format("unknown query '@{}' (expected @join, @product, "
@@ -222,6 +219,22 @@ private:
         }
         map_->map_ob(c, std::move(q), st.range);
         mapped_.insert(c.index());
+    }
+
+    // A plan transfers along conjunctive maps only (Δ of a query is where the paper's guarantees
+    // hold), so a gluing query gets the ways to say it conjunctively.
+    static std::string gluing_query_message(const std::string& macro, const std::string& ob) {
+        bool cases = macro == "cases" || macro == "coproduct";
+        return fmt::format(
+            "'@{}' is a gluing query, which maps do not support (only conjunctive ones: @join, "
+            "@product, @unit, @empty); {}",
+            macro,
+            cases ? fmt::format("give each case an object of its own in the target schema (one "
+                                "entry per case, each an object or a @join) instead of one '{}'",
+                                ob)
+                  : fmt::format("map '{}' to the @join of the parts to be glued and identify "
+                                "them in the states, or keep the quotient out of the map",
+                                ob));
     }
 
     std::optional<ObId> source_ob(const Expr& e) {

@@ -22,6 +22,10 @@ const Declaration* Module::find(std::string_view name) const {
     return nullptr;
 }
 
+void Module::remove(std::string_view name) {
+    std::erase_if(decls_, [&](const Declaration& d) { return d.name == name; });
+}
+
 void Module::add(Declaration d) {
     CATPLAN_ASSERT(find(d.name) == nullptr, "duplicate declaration name");
     decls_.push_back(std::move(d));
@@ -32,7 +36,8 @@ namespace {
 
 // A file's forms other than schemas and imports, by the pass that elaborates them.
 struct FileForms {
-    std::vector<const MacroCall*> instances, rules, domains, problems, maps, composites, migrations;
+    std::vector<const MacroCall*> instances, rules, domains, problems, maps, one_argument_maps,
+        composites, migrations;
 };
 
 // Elaborates the file's schemas, in order, and sorts its other forms; reports unknown macros.
@@ -44,10 +49,14 @@ FileForms schemas_and_forms(Elaborator& ctx, const ParsedFile& parsed, bool impo
         }
         if (form.name == "present") {
             elaborate_schema(ctx, form, imported);
+        } else if (form.name == "acset_type" || form.name == "abstract_acset_type") {
+            elaborate_acset_type(ctx, form);
         } else if (form.name == "acset_colim" || form.name == "acset") {
             f.instances.push_back(&form);
         } else if (form.name == "migration" && is_map_form(form)) {
             f.maps.push_back(&form);
+        } else if (is_one_argument_map(form)) {
+            f.one_argument_maps.push_back(&form);
         } else if (form.name == "rule" || form.name == "migration") {
             f.rules.push_back(&form);
         } else if (form.name == "compose") {
@@ -60,9 +69,9 @@ FileForms schemas_and_forms(Elaborator& ctx, const ParsedFile& parsed, bool impo
             f.problems.push_back(&form);
         } else {
             ctx.sink.error(form.name_range,
-                           fmt::format("unknown macro '@{}' (expected @present, @acset_colim, "
-                                       "@acset, @rule, @migration, @compose, @migrate, "
-                                       "@domain, @problem or @import)",
+                           fmt::format("unknown macro '@{}' (expected @present, @acset_type, "
+                                       "@acset_colim, @acset, @rule, @migration, @compose, "
+                                       "@migrate, @domain, @problem or @import)",
                                        form.name));
         }
     }
@@ -91,6 +100,9 @@ void elaborate_file(Elaborator& ctx, const ParsedFile& parsed, bool imported) {
     // Maps refer to schemas only; composites to maps.
     for (const auto* form : f.maps) {
         elaborate_map_declaration(ctx, *form, imported);
+    }
+    for (const auto* form : f.one_argument_maps) {
+        elaborate_one_argument_map(ctx, *form, imported);
     }
     for (const auto* form : f.composites) {
         elaborate_compose(ctx, *form, imported);

@@ -82,6 +82,8 @@ public:
     const Declaration* find(std::string_view name) const;
     /// Appends a declaration; its name must be new (asserted: the loader reports duplicates).
     void add(Declaration d);
+    /// Drops the declaration with this name, if any (a later declaration replaces it).
+    void remove(std::string_view name);
 
 private:
     std::vector<Declaration> decls_;

@@ -157,7 +157,8 @@ std::string print_schema(const Schema& s) {
                            s.attr_type(a.codom).name);
     }
     for (const auto& eq : s.equations()) {
-        out += fmt::format("  {} == {}\n", path_term(s, eq.lhs), path_term(s, eq.rhs));
+        std::string named = eq.name.empty() ? "" : eq.name + " := ";
+        out += fmt::format("  {}{} == {}\n", named, path_term(s, eq.lhs), path_term(s, eq.rhs));
     }
     return out + "end\n";
 }

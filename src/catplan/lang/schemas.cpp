@@ -209,7 +209,7 @@ std::string path_end(const Schema& s, const Path& p) {
     return p.attr ? s.attr_type(s.attr(*p.attr).codom).name : s.ob(s.path_codom_ob(p)).name;
 }
 
-void equation(Schema& s, const Expr& st, DiagnosticSink& sink) {
+void equation(Schema& s, const Expr& st, DiagnosticSink& sink, std::string name = {}) {
     auto lhs = path(s, st.args[0], sink);
     auto rhs = path(s, st.args[1], sink);
     if (!lhs || !rhs) {
@@ -224,12 +224,22 @@ void equation(Schema& s, const Expr& st, DiagnosticSink& sink) {
                                s.path_to_string(*rhs), s.ob(rhs->dom).name, rend));
         return;
     }
-    s.add_equation({"", std::move(*lhs), std::move(*rhs), st.range});
+    s.add_equation({std::move(name), std::move(*lhs), std::move(*rhs), st.range});
 }
 
 void schema_statement(Schema& s, const Expr& st, DiagnosticSink& sink) {
     if (st.is_binary("==")) {
         equation(s, st, sink);
+        return;
+    }
+    if (st.is_binary(":=")) {
+        if (st.args[0].kind != Expr::Kind::Name || !st.args[1].is_binary("==")) {
+            sink.error(st.range, fmt::format("expected a named equation 'name := f ⋅ g == h', "
+                                             "found '{}'",
+                                             to_string(st)));
+            return;
+        }
+        equation(s, st.args[1], sink, st.args[0].text);
         return;
     }
     if (!st.is_binary("::")) {
@@ -268,7 +278,12 @@ void schema_statement(Schema& s, const Expr& st, DiagnosticSink& sink) {
             kind = *k;
         }
         for (const Expr* n : names) {
-            if (check_new_generator(s, *n, sink)) {
+            // An attribute type inherited without a kind (Catlab's are type parameters, as in
+            // SchWeightedGraph) may be declared again with one.
+            auto old = s.find_attr_type(n->text);
+            if (old && kind != ValueKind::Unknown && s.attr_type(*old).kind == ValueKind::Unknown) {
+                s.set_kind(*old, kind);
+            } else if (check_new_generator(s, *n, sink)) {
                 s.add_attr_type(n->text, kind, n->range);
             }
         }

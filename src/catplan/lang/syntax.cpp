@@ -2,6 +2,7 @@
 
 #include "catplan/base/unicode.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cctype>
 #include <cerrno>
@@ -43,6 +44,13 @@ std::size_t ident_char_at(std::string_view text, std::size_t i, bool start) {
     CodePoint cp = decode_utf8(text, i);
     bool ok =
         cp.valid && (start ? is_identifier_start(cp.value) : is_identifier_continue(cp.value));
+    // Julia also continues a name with sub- and superscript digits and primes (`e₁`, `M′`),
+    // which Catlab code uses throughout.
+    auto julia_continue = [](char32_t v) {
+        return (v >= 0x2070 && v <= 0x2079) || (v >= 0x2080 && v <= 0x2089) || v == 0x00B2 ||
+               v == 0x00B3 || v == 0x00B9 || (v >= 0x2032 && v <= 0x2037);
+    };
+    ok = ok || (cp.valid && !start && julia_continue(cp.value));
     return ok ? cp.length : 0;
 }
 
@@ -127,8 +135,8 @@ private:
             push(TokenKind::At, b, i_, "@");
             return;
         }
-        static constexpr std::string_view kTwo[] = {
-            "::", "==", "<:", "=>", "->", "!=", "<=", ">=", "&&", "||", "|>"};
+        static constexpr std::string_view kTwo[] = {"::", ":=", "==", "<:", "=>", "->",
+                                                    "!=", "<=", ">=", "&&", "||", "|>"};
         for (auto op : kTwo) {
             if (text_.substr(i_, 2) == op) {
                 i_ += 2;
@@ -136,7 +144,7 @@ private:
                 return;
             }
         }
-        if (std::string_view("()[],;=.-+*/!<>:").find(static_cast<char>(c)) !=
+        if (std::string_view("()[]{},;=.-+*/!<>:").find(static_cast<char>(c)) !=
             std::string_view::npos) {
             ++i_;
             push(TokenKind::Punct, b, i_, std::string(1, static_cast<char>(c)));
@@ -321,6 +329,10 @@ public:
             if (peek().kind == TokenKind::Eof) {
                 break;
             }
+            if (at_julia_statement()) {
+                skip_julia_statement();
+                continue;
+            }
             try {
                 forms.push_back(top_level());
                 end_of_statement();
@@ -333,7 +345,78 @@ public:
         return forms;
     }
 
+    /// The Julia statements skipped, each with whether it is `using`/`import` of a Catlab module.
+    struct Skipped {
+        SourceRange range;
+        bool uses_catlab;
+    };
+
+    const std::vector<Skipped>& skipped() const { return skipped_; }
+
 private:
+    // A statement that is not a declaration: Julia code pasted around the declarations (`using
+    // Catlab`, `G = Graph(3)`, `function ... end`), skipped rather than reported. A declaration
+    // starts with '@' or is `Name = @macro ...`; a statement starting with anything but a name
+    // is no Julia worth skipping either, and stays an error.
+    bool at_julia_statement() const {
+        const Token& t = tokens_[pos_];
+        if (t.kind != TokenKind::Ident) {
+            return false;
+        }
+        const Token& t1 = tokens_[pos_ + 1];
+        bool assigns_macro = t1.kind == TokenKind::Punct && t1.text == "=" &&
+                             tokens_[pos_ + 2].kind == TokenKind::At;
+        return !assigns_macro;
+    }
+
+    static bool opens_julia_block(std::string_view word) {
+        static constexpr std::string_view kOpeners[] = {"begin", "function", "for",    "while",
+                                                        "if",    "let",      "struct", "quote",
+                                                        "try",   "do",       "macro"};
+        return std::find(std::begin(kOpeners), std::end(kOpeners), word) != std::end(kOpeners);
+    }
+
+    // Skips one Julia statement: to the end of its line, or past the `end` of the blocks it opens.
+    // A `module Name` line and a lone `end` are statements of their own, so that a file wrapped
+    // in a Julia module keeps its declarations.
+    void skip_julia_statement() {
+        SourceRange range = tokens_[pos_].range;
+        bool uses_catlab = false;
+        if (tokens_[pos_].text == "using" || tokens_[pos_].text == "import") {
+            const Token& module = tokens_[pos_ + 1];
+            uses_catlab = module.kind == TokenKind::Ident &&
+                          (module.text == "Catlab" || module.text == "DataMigrations" ||
+                           module.text == "AlgebraicRewriting" || module.text == "ACSets");
+        }
+        int brackets = 0, blocks = 0;
+        for (bool first = true;; first = false) {
+            const Token& t = tokens_[pos_];
+            if (t.kind == TokenKind::Eof) {
+                break;
+            }
+            bool separator =
+                t.kind == TokenKind::Newline || (t.kind == TokenKind::Punct && t.text == ";");
+            if (separator && brackets == 0 && blocks == 0) {
+                break;
+            }
+            if (t.kind == TokenKind::Punct && (t.text == "(" || t.text == "[" || t.text == "{")) {
+                ++brackets;
+            } else if (t.kind == TokenKind::Punct &&
+                       (t.text == ")" || t.text == "]" || t.text == "}")) {
+                brackets = std::max(0, brackets - 1);
+            } else if (t.kind == TokenKind::Ident && brackets == 0 && !(first && t.text == "end")) {
+                if (opens_julia_block(t.text)) {
+                    ++blocks;
+                } else if (t.text == "end") {
+                    blocks = std::max(0, blocks - 1);
+                }
+            }
+            range = range.merge(t.range);
+            ++pos_;
+        }
+        skipped_.push_back({range, uses_catlab});
+    }
+
     // Inside () and [] newlines do not end anything, so peek() skips them there.
     const Token& peek() {
         if (nest_ > 0) {
@@ -564,7 +647,7 @@ private:
     };
 
     static constexpr std::array<OperatorLevel, 11> kLevels{{
-        {{"="}, true},
+        {{"=", ":="}, true}, // `name := f ⋅ g == h` names an equation, as GATlab does
         {{"=>", "->"}, true},
         {{"|>"}, false}, // Julia's pipe, `x |> (a -> false)`: first x, then the function
         {{"||"}, false},
@@ -795,6 +878,12 @@ private:
             return sealed(std::move(e), name.range);
         }
         e.kind = Expr::Kind::Name;
+        // Julia type parameters, `LabeledGraph{String}`: kept as the name's arguments.
+        if (at_punct("{") && peek().range.begin == name.range.end) {
+            next();
+            e.args = list("}", e.range);
+            return sealed(std::move(e), name.range);
+        }
         return e;
     }
 
@@ -855,6 +944,7 @@ private:
 
     std::vector<Token> tokens_;
     DiagnosticSink& sink_;
+    std::vector<Skipped> skipped_;
     std::size_t pos_ = 0;
     int nest_ = 0;
     std::uint32_t depth_ = 0; // levels of recursion, see Level
@@ -869,7 +959,42 @@ std::vector<Token> lex(const SourceManager& sources, std::uint32_t file, Diagnos
 ParsedFile parse(const SourceManager& sources, std::uint32_t file, DiagnosticSink& sink) {
     ParsedFile out;
     out.file = file;
-    out.forms = Parser(lex(sources, file, sink), sink).file();
+    // Lexical errors inside skipped Julia statements (a `?:` or `$` the language lacks) are
+    // dropped with the statement, so the lexer's diagnostics wait for the parse.
+    DiagnosticSink lexical(sources);
+    Parser parser(lex(sources, file, lexical), sink);
+    out.forms = parser.file();
+    const auto& skipped = parser.skipped();
+    for (const Diagnostic& d : lexical.diagnostics()) {
+        bool in_julia = std::any_of(skipped.begin(), skipped.end(), [&](const auto& j) {
+            return d.range.begin >= j.range.begin && d.range.end <= j.range.end;
+        });
+        if (!in_julia) {
+            sink.add(d);
+        }
+    }
+    // One note per run of skipped statements.
+    for (std::size_t i = 0; i < skipped.size();) {
+        std::size_t j = i;
+        SourceRange run = skipped[i].range;
+        while (j + 1 < skipped.size() &&
+               sources.line_col(file, skipped[j + 1].range.begin).line <=
+                   sources.line_col(file, skipped[j].range.end).line + 1) {
+            run = run.merge(skipped[++j].range);
+        }
+        std::uint32_t lines =
+            sources.line_col(file, run.end).line - sources.line_col(file, run.begin).line + 1;
+        sink.note(SourceRange{file, run.begin, run.begin},
+                  fmt::format("skipped {} line{} of Julia code (catplan reads the declarations "
+                              "only)",
+                              lines, lines == 1 ? "" : "s"));
+        i = j + 1;
+    }
+    for (const auto& j : skipped) {
+        if (j.uses_catlab && !out.catlab_using.valid()) {
+            out.catlab_using = j.range;
+        }
+    }
     return out;
 }
 
@@ -888,6 +1013,7 @@ std::string join(const std::vector<Expr>& args) {
 std::string to_string(const Expr& e) {
     switch (e.kind) {
     case Expr::Kind::Name:
+        return e.args.empty() ? e.text : fmt::format("{}{{{}}}", e.text, join(e.args));
     case Expr::Kind::Int:
     case Expr::Kind::Float:
         return e.text;

@@ -41,7 +41,7 @@ struct MacroCall;
 
 struct Expr {
     enum class Kind {
-        Name,   // text
+        Name,   // text; args: the Julia type parameters of `Name{T, U}`, if any
         Int,    // int_value
         Float,  // float_value
         String, // text
@@ -88,11 +88,17 @@ struct MacroCall {
 struct ParsedFile {
     std::uint32_t file = SourceRange::kNoFile;
     std::vector<MacroCall> forms;
+    /// The first `using Catlab...` (or DataMigrations, AlgebraicRewriting, ACSets) line, which
+    /// makes Catlab's schemas visible as `@import catlab` does; invalid when there is none.
+    SourceRange catlab_using;
 };
 
 /// Lexes and parses a buffer; syntax errors go to `sink` and the parser resumes at the next
-/// statement, so the result holds every form that parsed. Nesting deeper than kMaxNesting
-/// (source.hpp) is an error that ends the parse, since where the nested form ends is unknown.
+/// statement, so the result holds every form that parsed. A statement that starts with a name and
+/// is not `Name = @macro ...` is Julia code pasted around the declarations: it is skipped (with
+/// its blocks, up to their `end`) and each run of them gets one note. Nesting deeper than
+/// kMaxNesting (source.hpp) is an error that ends the parse, since where the nested form ends is
+/// unknown.
 ParsedFile parse(const SourceManager& sources, std::uint32_t file, DiagnosticSink& sink);
 
 /// The expression as source-like text (for messages and tests): `f(x) == "red"`.

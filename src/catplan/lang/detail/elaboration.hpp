@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace catplan::lang::detail {
@@ -41,6 +42,21 @@ void spell_pddl_names(const Elaborator& ctx, MacroCall& form);
 /// section into `actions`.
 void add_pddl_hooks(const Elaborator& ctx, MapForm& form,
                     std::vector<ActionCorrespondence>& actions);
+
+// ---- catlab.cpp
+// ----------------------------------------------------------------------------------
+
+/// Loads Catlab's standard schemas (once per load), for `@import catlab` and `using Catlab`.
+void import_catlab(Elaborator& ctx);
+/// The library's text (for tests and docs).
+std::string_view catlab_library_text();
+/// `@acset_type Name(Schema, ...)`: Name becomes another name of the schema.
+void elaborate_acset_type(Elaborator& ctx, const MacroCall& form);
+/// Whether a form is DataMigrations' `M = @migration Source begin ... end`, a map whose target
+/// schema its entries declare (`V => V`, `(src: E → V) => tgt`), rather than a rule.
+bool is_one_argument_map(const MacroCall& form);
+/// Declares such a map; its target schema is named `M_domain`.
+void elaborate_one_argument_map(Elaborator& ctx, const MacroCall& form, bool imported);
 
 // ---- schemas.cpp
 // ---------------------------------------------------------------------------------

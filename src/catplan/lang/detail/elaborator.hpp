@@ -53,7 +53,8 @@ struct Elaborator {
                const LoadOptions& load_options)
         : sources(source_manager), sink(diagnostics), options(load_options) {}
 
-    /// Claims a name for the whole module (all files); reports and returns false when taken.
+    /// Claims a name for the whole module (all files); a name taken already is a warning, and
+    /// the earlier declaration is dropped (the later one wins, as Julia rebinds names).
     bool claim_name(const std::string& name, SourceRange range);
     /// The schema a name refers to (`yName` too when allow_yoneda), or nullptr after an error.
     std::shared_ptr<schema::Schema> lookup_schema(const Expr& name, bool allow_yoneda);
@@ -89,7 +90,7 @@ Declaration new_declaration(DeclKind kind, std::string name, SourceRange range, 
 
 /// "an object", "a hom", "an attribute type", "an attribute".
 const char* kind_noun(schema::GeneratorKind k);
-/// Whether the expression is an Int, Float, String or Bool literal.
+/// Whether the expression is an Int, Float, String (or Julia :symbol) or Bool literal.
 bool is_literal(const Expr& e);
 /// The kind of a literal (Unknown for anything else).
 schema::ValueKind literal_kind(const Expr& e);

@@ -1,0 +1,1 @@
+json import tests/cli/data/graphs.cp Graph tests/cli/data/long_line.json

@@ -1,0 +1,1 @@
+check tests/lang/catlab_pasted.cp

@@ -1,0 +1,1 @@
+check tests/lang/duplicate_declaration_later_wins.cp

@@ -1,0 +1,1 @@
+json export examples/colorblocksworld/colorblocksworld.cp Initial --names

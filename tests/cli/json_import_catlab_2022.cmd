@@ -1,0 +1,1 @@
+json import tests/cli/data/catlab_graphs.cp SchWeightedGraph tests/cli/data/catlab_2022.json

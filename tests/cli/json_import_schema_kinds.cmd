@@ -1,0 +1,1 @@
+json import tests/cli/data/schema_kinds.json --name Weighted
