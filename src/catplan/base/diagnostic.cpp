@@ -138,10 +138,10 @@ std::string DiagnosticSink::render(const Diagnostic& d) const {
     return out;
 }
 
-std::string DiagnosticSink::render() const {
+std::string DiagnosticSink::render_from(std::size_t first) const {
     std::vector<const Diagnostic*> sorted;
-    for (const auto& d : diagnostics_) {
-        sorted.push_back(&d);
+    for (std::size_t i = first; i < diagnostics_.size(); ++i) {
+        sorted.push_back(&diagnostics_[i]);
     }
     std::stable_sort(sorted.begin(), sorted.end(), [](const Diagnostic* a, const Diagnostic* b) {
         if (a->range.file != b->range.file) {

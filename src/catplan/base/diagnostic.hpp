@@ -48,7 +48,10 @@ public:
     const std::vector<Diagnostic>& diagnostics() const { return diagnostics_; }
 
     /// All diagnostics, stably sorted by file and offset, with source lines and carets.
-    std::string render() const;
+    std::string render() const { return render_from(0); }
+
+    /// The diagnostics recorded from the first-th on, sorted and rendered as render() does.
+    std::string render_from(std::size_t first) const;
     /// One diagnostic with its notes.
     std::string render(const Diagnostic& d) const;
 

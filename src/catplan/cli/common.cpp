@@ -8,12 +8,15 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 #include <ostream>
+#include <unistd.h>
 
 namespace catplan::cli {
 
-// Prints the diagnostics collected so far; returns true when there were errors.
-bool report(const Session& s, std::ostream& err) {
-    err << s.sink.render();
+// Prints the diagnostics collected since the last call, each once (a command loads in phases, each
+// reporting what it found); returns true when there were errors.
+bool report(Session& s, std::ostream& err) {
+    err << s.sink.render_from(s.reported);
+    s.reported = s.sink.diagnostics().size();
     return s.sink.has_errors();
 }
 
@@ -223,14 +226,33 @@ void add_replan_options(CLI::App* cmd, TransferArgs& a, const std::string& repla
                     "with --replan: stop the search after expanding N states (the same result on "
                     "every machine, unlike a time limit)")
         ->check(positive_count());
+    cmd->add_flag("--progress", a.progress,
+                  "with --replan: report the search's progress on stderr every 2 s (the default "
+                  "when stderr is a terminal)");
 }
 
-plan::SearchOptions replan_options(const TransferArgs& a) {
+void add_trajectory_options(CLI::App* cmd, TransferArgs& a) {
+    cmd->add_flag("--strict", a.strict,
+                  "a target trajectory that diverges from the migrated source states is invalid "
+                  "(exit 1)");
+    cmd->add_flag("--follow-source", a.follow_source,
+                  "take each target state to be the migrated source state and check that each "
+                  "target step reaches it");
+}
+
+plan::SearchOptions replan_options(const TransferArgs& a, std::ostream& err) {
     plan::SearchOptions so;
     so.search = *plan::parse_search(a.search);
     so.heuristic = *plan::parse_heuristic(a.heuristic);
     so.max_nodes = a.max_nodes;
     so.max_seconds = a.max_time > 0 ? a.max_time : a.max_nodes > 0 ? 0 : 60;
+    if (a.progress || ::isatty(STDERR_FILENO) != 0) {
+        so.progress = [&err](const plan::SearchStats& st) {
+            err << fmt::format("catplan: replanning: expanded {}, generated {}, frontier {}, "
+                               "{:.1f} s\n",
+                               st.expanded, st.generated, st.frontier, st.seconds);
+        };
+    }
     return so;
 }
 
@@ -271,6 +293,19 @@ std::optional<TransferInputs> load_transfer_inputs(Session& s, const TransferArg
     }
     in.plan = std::move(*plan);
     return in;
+}
+
+transfer::TransferOptions transfer_options(const TransferArgs& a, const TransferInputs& in) {
+    transfer::TransferOptions options;
+    options.rename_by_type = a.rename_by_type;
+    // The verdict is about the goal intended in the target domain, when one is given.
+    options.goal = in.target_goal;
+    options.goal_name = in.pddl && a.goal.empty() ? a.target_problem : a.goal;
+    // PDDL inputs: the target domain's own actions carry the steps out.
+    options.target_actions = in.pddl ? in.pddl->actions : nullptr;
+    options.strict = a.strict;
+    options.follow_source = a.follow_source;
+    return options;
 }
 
 std::optional<int> CommandTable::run_parsed(std::ostream& out, std::ostream& err) const {

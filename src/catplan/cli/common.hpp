@@ -31,10 +31,13 @@ namespace catplan::cli {
 struct Session {
     SourceManager sources;
     DiagnosticSink sink{sources};
+    /// How many of the sink's diagnostics have been printed.
+    std::size_t reported = 0;
 };
 
-/// Prints the diagnostics collected so far; returns true when there were errors.
-bool report(const Session& s, std::ostream& err);
+/// Prints the diagnostics collected since the last call (each once); returns true when there
+/// were errors.
+bool report(Session& s, std::ostream& err);
 
 /// Loads a file and its imports; nullopt (with every diagnostic printed) when it has errors.
 std::optional<lang::Module> load(Session& s, const std::string& file, std::ostream& err);
@@ -112,17 +115,27 @@ struct TransferArgs {
     /// alone keeps the result the same on every machine).
     double max_time = 0;
     std::uint64_t max_nodes = 0;
+    /// --progress: report the replanning search's progress on stderr (also when stderr is a
+    /// terminal).
+    bool progress = false;
+    /// --strict and --follow-source (transfer::TransferOptions).
+    bool strict = false, follow_source = false;
 };
 
 /// Adds FILE, --map, --domain, --problem, --plan, --goal and --rename-by-type to cmd.
 void add_transfer_input_options(CLI::App* cmd, TransferArgs& a);
 
-/// Adds --replan (described by replan_help), --search, --heuristic, --max-time and --max-nodes
-/// to cmd.
+/// Adds --strict and --follow-source (how a trajectory that leaves the migrated source states is
+/// judged) to cmd.
+void add_trajectory_options(CLI::App* cmd, TransferArgs& a);
+
+/// Adds --replan (described by replan_help), --search, --heuristic, --max-time, --max-nodes and
+/// --progress to cmd.
 void add_replan_options(CLI::App* cmd, TransferArgs& a, const std::string& replan_help);
 
-/// The search the replan options ask for.
-plan::SearchOptions replan_options(const TransferArgs& a);
+/// The search the replan options ask for; progress reports go to `err` with --progress or when
+/// stderr is a terminal (so that captured output stays the same from run to run).
+plan::SearchOptions replan_options(const TransferArgs& a, std::ostream& err);
 
 struct PddlTransfer;
 
@@ -140,6 +153,9 @@ struct TransferInputs {
 /// Loads the inputs a's names; nullopt with every error printed.
 std::optional<TransferInputs> load_transfer_inputs(Session& s, const TransferArgs& a,
                                                    std::ostream& err);
+
+/// The transfer a asks for: renaming, the intended goal, --strict and --follow-source.
+transfer::TransferOptions transfer_options(const TransferArgs& a, const TransferInputs& in);
 
 /// The subcommands and what runs each when it is the one parsed.
 class CommandTable {

@@ -26,12 +26,8 @@ int cmd_report(const ReportArgs& a, std::ostream& out, std::ostream& err) {
     if (!in) {
         return kBadInput;
     }
-    transfer::TransferOptions options;
+    auto options = transfer_options(a.in, *in);
     options.keep_states = true; // the page shows every state
-    options.rename_by_type = a.in.rename_by_type;
-    // The verdict is about the goal intended in the target domain, as `transfer --goal`.
-    options.goal = in->target_goal;
-    options.goal_name = a.in.goal;
     auto t = transfer::transfer_plan(*in->map, *in->problem, in->plan, options);
     report::ReportInput r;
     r.map = in->map.get();
@@ -44,7 +40,7 @@ int cmd_report(const ReportArgs& a, std::ostream& out, std::ostream& err) {
     r.dot.left_to_right = a.lr;
     std::optional<transfer::Replan> rp;
     if (a.in.replan) {
-        rp = transfer::replan(t, replan_options(a.in));
+        rp = transfer::replan(t, replan_options(a.in, err));
         r.replan = &*rp;
     }
     int rc = emit(report::html_report(r), a.output, out, err);
@@ -67,6 +63,7 @@ void add_report_commands(CLI::App& app, CommandTable& table) {
                   "ontologies, the map, both plans step by step with their states, the verdict "
                   "and goal satisfaction (exit 1 when the transferred plan is invalid)");
     add_transfer_input_options(cmd, a->in);
+    add_trajectory_options(cmd, a->in);
     add_replan_options(
         cmd, a->in, "also plan from scratch in the target domain and show the efficiency figures");
     cmd->add_flag("--lr", a->lr, "lay schemas and states out left to right");

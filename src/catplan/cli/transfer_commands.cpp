@@ -24,7 +24,7 @@ namespace {
 struct TransferCommandArgs {
     TransferArgs in;
     std::string format = "text", output;
-    bool trace = false, no_timing = false, strict = false, follow_source = false;
+    bool trace = false, no_timing = false;
 };
 
 // Whether the claim of Appendix A holds, or the hypothesis it lacks: one line of the report.
@@ -254,19 +254,13 @@ int cmd_transfer(const TransferCommandArgs& a, std::ostream& out, std::ostream& 
     if (!in) {
         return kBadInput;
     }
-    transfer::TransferOptions options;
+    auto options = transfer_options(a.in, *in);
     options.keep_states = a.trace;
-    options.rename_by_type = a.in.rename_by_type;
-    options.goal = in->target_goal;
-    options.goal_name = in->pddl && a.in.goal.empty() ? a.in.target_problem : a.in.goal;
-    options.target_actions = in->pddl ? in->pddl->actions : nullptr;
-    options.strict = a.strict;
-    options.follow_source = a.follow_source;
     Outcome r;
     r.t = transfer::transfer_plan(*in->map, *in->problem, in->plan, options);
     r.transfer_peak_kib = catplan::peak_rss_kib();
     if (a.in.replan) {
-        r.replan = transfer::replan(r.t, replan_options(a.in));
+        r.replan = transfer::replan(r.t, replan_options(a.in, err));
     }
     std::string text =
         a.format == "json" ? json::dump(json_report(a, *in, r), 2) + "\n" : text_report(a, *in, r);
@@ -297,12 +291,7 @@ void add_transfer_commands(CLI::App& app, CommandTable& table) {
                     "(exit 1 when the transferred plan is invalid)");
     add_transfer_input_options(cmd, a->in);
     cmd->add_flag("--trace", a->trace, "print every target state as tables");
-    cmd->add_flag("--strict", a->strict,
-                  "a target trajectory that diverges from the migrated source states is invalid "
-                  "(exit 1)");
-    cmd->add_flag("--follow-source", a->follow_source,
-                  "take each target state to be the migrated source state and check that each "
-                  "target step reaches it");
+    add_trajectory_options(cmd, a->in);
     cmd->add_option("--format", a->format, "text or json")
         ->check(CLI::IsMember({"text", "json"}))
         ->capture_default_str();

@@ -1,6 +1,7 @@
 #include "catplan/lang/module.hpp"
 #include "catplan/lang/syntax.hpp"
 
+#include <algorithm>
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 #include <set>
@@ -39,9 +40,13 @@ std::string path_term(const Schema& s, const Path& p) {
 } // namespace
 
 std::string summarize_rule(const rewrite::Rule& rule) {
+    // Each name once: a migrated rule carries a parameter to every target object that has it
+    // (unstack(block, underblock), not unstack(block, block, underblock, underblock)).
     std::vector<std::string> params;
     for (const auto& p : rule.parameters) {
-        params.push_back(p.name);
+        if (std::find(params.begin(), params.end(), p.name) == params.end()) {
+            params.push_back(p.name);
+        }
     }
     std::size_t deleted = 0, created = 0;
     for (std::uint32_t o = 0; o < rule.L.schema().num_obs(); ++o) {

@@ -223,28 +223,95 @@ std::optional<std::string> explain_no_embedding(const ACSet& pattern, const ACSe
     return std::nullopt;
 }
 
-std::string describe_match(const ACSetMorphism& m, const ACSet& l, const ACSet& x) {
+namespace {
+
+// A part with its word and whether that word is more than its bare label.
+struct Called {
+    std::string word;
+    bool readable = false;
+};
+
+Called call(const MatchWords& words, const ACSet& x, ObId ob, Part p) {
+    std::string label = x.part_label(ob, p);
+    if (!words.part) {
+        return {label, false};
+    }
+    std::string word = words.part(x, ob, p);
+    bool readable = word != label;
+    return {std::move(word), readable};
+}
+
+// The first readable word of a side, else the first word.
+const std::string& best(const std::vector<Called>& side) {
+    for (const auto& c : side) {
+        if (c.readable) {
+            return c.word;
+        }
+    }
+    return side.front().word;
+}
+
+// The bindings of one group of parts of l: one item when the readable words of their images
+// agree, else one per part.
+void group_items(const std::vector<Called>& from, const std::vector<Called>& to,
+                 std::vector<std::string>& items) {
+    std::vector<std::string> distinct;
+    for (const auto& c : to) {
+        if (c.readable && std::find(distinct.begin(), distinct.end(), c.word) == distinct.end()) {
+            distinct.push_back(c.word);
+        }
+    }
+    if (distinct.size() <= 1) {
+        items.push_back(fmt::format("{} ↦ {}", best(from), best(to)));
+        return;
+    }
+    for (std::size_t i = 0; i < from.size(); ++i) {
+        items.push_back(fmt::format("{} ↦ {}", best(from), to[i].word));
+    }
+}
+
+} // namespace
+
+std::string describe_match(const ACSetMorphism& m, const ACSet& l, const ACSet& x,
+                           const MatchWords& words) {
     const auto& s = l.schema();
-    std::vector<std::string> items;
+    // Groups in the order of their first part: (key, the parts' words, their images' words).
+    std::vector<std::optional<std::uint64_t>> keys;
+    std::vector<std::pair<std::vector<Called>, std::vector<Called>>> groups;
     for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
         for (Part p = 0; p < l.num_parts(ObId(o)); ++p) {
-            std::string item = fmt::format("{} ↦ {}", l.part_label(ObId(o), p),
-                                           x.part_label(ObId(o), m.components[o][p]));
-            // Once each: a migrated rule has a part per target type of a source part, all
-            // named alike (block ↦ bread2 for its Object and its Receptacle).
-            if (std::find(items.begin(), items.end(), item) == items.end()) {
-                items.push_back(std::move(item));
+            auto key = words.group ? words.group(ObId(o), p) : std::nullopt;
+            auto it = key ? std::find(keys.begin(), keys.end(), key) : keys.end();
+            if (it == keys.end()) {
+                keys.push_back(key);
+                groups.emplace_back();
+                it = std::prev(keys.end());
             }
+            auto& g = groups[static_cast<std::size_t>(it - keys.begin())];
+            g.first.push_back(call(words, l, ObId(o), p));
+            g.second.push_back(call(words, x, ObId(o), m.components[o][p]));
+        }
+    }
+    std::vector<std::string> items;
+    for (const auto& [from, to] : groups) {
+        group_items(from, to, items);
+    }
+    // Once each: a migrated rule has a part per target type of a source part, all named alike
+    // (block ↦ bread2 for its Object and its Receptacle).
+    std::vector<std::string> once;
+    for (auto& item : items) {
+        if (std::find(once.begin(), once.end(), item) == once.end()) {
+            once.push_back(std::move(item));
         }
     }
     for (std::uint32_t t = 0; t < s.num_attr_types(); ++t) {
         AttrTypeId ty(t);
         for (std::uint32_t j = 0; j < l.num_vars(ty) && j < m.var_components[t].size(); ++j) {
-            items.push_back(fmt::format("{} ↦ {}", l.value_label(ty, acset::Value::var(j)),
-                                        x.value_label(ty, m.var_components[t][j])));
+            once.push_back(fmt::format("{} ↦ {}", l.value_label(ty, acset::Value::var(j)),
+                                       x.value_label(ty, m.var_components[t][j])));
         }
     }
-    return fmt::format("{}", fmt::join(items, ", "));
+    return fmt::format("{}", fmt::join(once, ", "));
 }
 
 Result<ACSetMorphism> resolve_step(const Rule& rule, const ACSet& x, const Step& step) {

@@ -19,6 +19,8 @@
 #include "catplan/hom/hom_search.hpp"
 #include "catplan/plan/domain.hpp"
 
+#include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -42,9 +44,20 @@ std::optional<std::string> explain_no_embedding(const ACSet& pattern, const ACSe
 /// the reason there is none, naming the first goal statement that cannot be satisfied.
 Result<ACSetMorphism> embed_goal(const ACSet& goal, const ACSet& x);
 
+/// How describe_match calls the parts it binds.
+struct MatchWords {
+    /// A word for part p of ob in a state; empty: the part's label (`E`, `#3`).
+    std::function<std::string(const ACSet&, ObId, Part)> part;
+    /// Parts of l that stand for one thing share a key (a migrated rule's parts of one source
+    /// part, one per target object); empty: every part stands alone.
+    std::function<std::optional<std::uint64_t>(ObId, Part)> group;
+};
+
 /// "block ↦ E, underblock ↦ D, o ↦ x1": each part (and variable) of l with its image in x, each
-/// such binding once.
-std::string describe_match(const ACSetMorphism& m, const ACSet& l, const ACSet& x);
+/// such binding once. The parts of a group are one binding when their images agree, each side
+/// called by the first of its words that is not a bare label (`isEmpty(empty)`, not `#3`).
+std::string describe_match(const ACSetMorphism& m, const ACSet& l, const ACSet& x,
+                           const MatchWords& words = {});
 
 struct ValidateOptions {
     /// Keep every state X_0 .. X_k in the result (for a trace).

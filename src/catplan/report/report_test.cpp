@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include <fmt/format.h>
+#include <memory>
 #include <set>
 
 namespace catplan::report {
@@ -363,6 +365,40 @@ TEST(Svg, RendersAndInlinesWithPrefixedIds) {
     EXPECT_EQ(in.rfind("<svg", 0), 0u);
     EXPECT_FALSE(contains(in, "<!--"));
     EXPECT_TRUE(contains(in, "id=\"p7_graph0\""));
+}
+
+// Graphviz orders subgraphs by id, and its default id of a name is the name's address: clusters
+// came out in an order that changed from run to run. They must come out in the order written.
+TEST(Svg, ClustersComeOutInTheOrderWrittenWhateverTheHeap) {
+    std::string dot = "digraph G {\n";
+    std::vector<std::string> names;
+    for (int i = 0; i < 24; ++i) {
+        // Names of many lengths land in different allocator size classes.
+        names.push_back("cluster_" + std::string(static_cast<std::size_t>(1 + (i * 7) % 40), 'z') +
+                        std::to_string(i));
+        dot += fmt::format("subgraph {} {{ n{}; }}\n", names.back(), i);
+    }
+    dot += "}\n";
+    SvgRenderer r;
+    std::vector<std::unique_ptr<char[]>> churn;
+    std::string first;
+    for (int round = 0; round < 3; ++round) {
+        for (int k = 0; k < 50 * (round + 1); ++k) {
+            churn.push_back(std::make_unique<char[]>(static_cast<std::size_t>(8 + k % 64)));
+        }
+        auto svg = r.render(dot);
+        ASSERT_TRUE(svg) << svg.error();
+        std::size_t at = 0;
+        for (const auto& n : names) {
+            std::size_t next = svg->find("<title>" + n + "</title>", at);
+            ASSERT_NE(next, std::string::npos) << n << " out of order";
+            at = next;
+        }
+        if (round == 0) {
+            first = *svg;
+        }
+        EXPECT_EQ(*svg, first);
+    }
 }
 
 TEST(Svg, BadDotIsAFailureNotACrash) {

@@ -3,12 +3,15 @@
 #include <atomic>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fmt/format.h>
 #include <fstream>
+#include <map>
 #include <mutex>
 #include <sstream>
 #include <unistd.h>
+#include <vector>
 
 #ifdef CATPLAN_HAVE_GVC
 #include <graphviz/cgraph.h>
@@ -69,6 +72,93 @@ GVC_t* shared_context() {
     return gvc;
 }
 
+// Object ids in the order names are first read. Graphviz's default id of a named object is the
+// address of its interned name, and it keeps subgraphs ordered by id: clusters were laid out and
+// written in an order that changed from run to run. Named ids are even, anonymous ones odd, as
+// Graphviz's own allocator has them (its printing of names relies on that).
+struct ReadOrderIds {
+    std::vector<std::unique_ptr<char[]>> names; // id 2k+2 is names[k]
+    std::map<std::string, IDTYPE, std::less<>> ids;
+    IDTYPE next_anonymous = 1;
+};
+
+void* ids_open(Agraph_t*, Agdisc_t*) {
+    return new ReadOrderIds;
+}
+
+long ids_map(void* state, int, char* str, IDTYPE* id, int create) {
+    auto& s = *static_cast<ReadOrderIds*>(state);
+    if (str == nullptr) {
+        *id = s.next_anonymous;
+        s.next_anonymous += 2;
+        return 1;
+    }
+    if (auto it = s.ids.find(std::string_view(str)); it != s.ids.end()) {
+        *id = it->second;
+        return 1;
+    }
+    if (create == 0) {
+        return 0;
+    }
+    std::size_t n = std::strlen(str) + 1;
+    s.names.push_back(std::make_unique<char[]>(n));
+    std::memcpy(s.names.back().get(), str, n);
+    *id = 2 * static_cast<IDTYPE>(s.names.size());
+    s.ids.emplace(str, *id);
+    return 1;
+}
+
+long ids_alloc(void*, int, IDTYPE) {
+    return 0; // no ids chosen by the caller
+}
+
+void ids_free(void*, int, IDTYPE) {}
+
+char* ids_print(void* state, int, IDTYPE id) {
+    auto& s = *static_cast<ReadOrderIds*>(state);
+    if (id % 2 != 0 || id == 0 || id / 2 > s.names.size()) {
+        return nullptr;
+    }
+    return s.names[id / 2 - 1].get();
+}
+
+void ids_close(void* state) {
+    delete static_cast<ReadOrderIds*>(state);
+}
+
+void ids_register(void*, int, void*) {}
+
+Agiddisc_t g_read_order_ids = {ids_open,  ids_map,   ids_alloc,   ids_free,
+                               ids_print, ids_close, ids_register};
+
+// The DOT text read from memory (agmemread's channel, with our ids).
+struct TextChannel {
+    std::string_view text;
+    std::size_t at = 0;
+};
+
+int text_read(void* chan, char* buf, int size) {
+    auto& c = *static_cast<TextChannel*>(chan);
+    // One line per call, as Graphviz's own readers give it.
+    std::size_t n = 0;
+    while (c.at < c.text.size() && n + 1 < static_cast<std::size_t>(size)) {
+        char ch = c.text[c.at++];
+        buf[n++] = ch;
+        if (ch == '\n') {
+            break;
+        }
+    }
+    buf[n] = '\0';
+    return static_cast<int>(n);
+}
+
+Agraph_t* read_graph(std::string_view dot) {
+    static Agiodisc_t io = {text_read, AgIoDisc.putstr, AgIoDisc.flush};
+    static Agdisc_t disc = {&AgMemDisc, &g_read_order_ids, &io};
+    TextChannel chan{dot};
+    return agread(&chan, &disc);
+}
+
 } // namespace
 
 struct SvgRenderer::Impl {};
@@ -84,9 +174,8 @@ Result<std::string> SvgRenderer::render(std::string_view dot) {
     g_errors = &errors;
     agseterr(AGERR);
     agseterrf(collect_error);
-    std::string text(dot); // agmemread wants a NUL-terminated string
     Result<std::string> out = fail("");
-    if (Agraph_t* g = agmemread(text.c_str()); g == nullptr) {
+    if (Agraph_t* g = read_graph(dot); g == nullptr) {
         out = fail("Graphviz could not read the picture: " + errors);
     } else {
         if (gvLayout(gvc, g, "dot") != 0) {

@@ -1,5 +1,7 @@
 #include "catplan/transfer/terms.hpp"
 
+#include "catplan/plan/validate.hpp"
+
 #include <algorithm>
 #include <fmt/format.h>
 #include <tuple>
@@ -95,28 +97,19 @@ std::vector<std::string> part_statements(const acset::ACSet& x, ObId ob, Part p)
 }
 
 std::string describe_bindings(const hom::ACSetMorphism& m, const acset::ACSet& l,
-                              const acset::ACSet& x) {
-    const auto& s = l.schema();
-    std::vector<std::string> items;
-    for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
-        for (Part p = 0; p < l.num_parts(ObId(o)); ++p) {
-            std::string item = fmt::format("{} ↦ {}", part_word(l, ObId(o), p),
-                                           part_word(x, ObId(o), m.components[o][p]));
-            // Once each: a migrated rule has a part per target type of a source part, all
-            // named alike (block ↦ bread2 for its Object and its Receptacle).
-            if (std::find(items.begin(), items.end(), item) == items.end()) {
-                items.push_back(std::move(item));
+                              const acset::ACSet& x, const LOrigins* origins) {
+    plan::MatchWords words;
+    words.part = [](const acset::ACSet& y, ObId ob, Part p) { return part_word(y, ob, p); };
+    if (origins != nullptr) {
+        words.group = [origins](ObId ob, Part p) -> std::optional<std::uint64_t> {
+            const auto& o = (*origins)[ob.index()];
+            if (!o || p >= o->parts.size()) {
+                return std::nullopt;
             }
-        }
+            return (std::uint64_t{o->ob.index()} << 32) | o->parts[p];
+        };
     }
-    for (std::uint32_t t = 0; t < s.num_attr_types(); ++t) {
-        AttrTypeId ty(t);
-        for (std::uint32_t j = 0; j < l.num_vars(ty) && j < m.var_components[t].size(); ++j) {
-            items.push_back(fmt::format("{} ↦ {}", l.value_label(ty, acset::Value::var(j)),
-                                        x.value_label(ty, m.var_components[t][j])));
-        }
-    }
-    return fmt::format("{}", fmt::join(items, ", "));
+    return plan::describe_match(m, l, x, words);
 }
 
 } // namespace catplan::transfer

@@ -11,7 +11,9 @@
 
 #include "catplan/acset/acset.hpp"
 #include "catplan/hom/morphism.hpp"
+#include "catplan/migrate/migration.hpp"
 
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -44,10 +46,15 @@ std::string attr_statement(const acset::ACSet& x, AttrId a, Part p);
 /// in schema order.
 std::vector<std::string> part_statements(const acset::ACSet& x, ObId ob, Part p);
 
-/// A match m : L -> X in words, each part of L once with the part of X it goes to, both called
-/// by part_word (`block ↦ E, isEmpty(empty) ↦ isEmpty(empty)`), then each variable of L with its
-/// value.
+/// Where each part of a migrated rule's L starts, by target object (migrate::tuple_origins).
+using LOrigins = std::vector<std::optional<migrate::TupleOrigins>>;
+
+/// A match m : L -> X in words (plan::describe_match), each part called by part_word
+/// (`block ↦ E, isEmpty(empty) ↦ isEmpty(empty)`), then each variable of L with its value. With
+/// `origins`, the parts of L that start at one source part are one binding, called by the first
+/// of them that has more than a label (the hand-empty marker's Receptacle part as
+/// `isEmpty(empty)`, after its Object part, not `#3 ↦ #7`).
 std::string describe_bindings(const hom::ACSetMorphism& m, const acset::ACSet& l,
-                              const acset::ACSet& x);
+                              const acset::ACSet& x, const LOrigins* origins = nullptr);
 
 } // namespace catplan::transfer

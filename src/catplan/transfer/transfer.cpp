@@ -296,7 +296,8 @@ private:
         st.source = s;
         st.target = step_of(*a->target, matches[0], y_->state());
         st.source_bindings = describe_bindings(*m, a->source->L, x_->state());
-        st.target_bindings = describe_bindings(matches[0], a->target->L, y_->state());
+        st.target_bindings =
+            describe_bindings(matches[0], a->target->L, y_->state(), &a->l_origins);
         st.lost_parameters = lost_parameters(*a->source, *a->target);
         if (comparing()) {
             check_->before(*m, *x_, matches[0], *y_);
