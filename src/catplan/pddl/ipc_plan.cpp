@@ -1,6 +1,7 @@
 #include "catplan/pddl/ipc_plan.hpp"
 
 #include "catplan/base/unicode.hpp"
+#include "catplan/pddl/steps.hpp"
 #include "catplan/plan/validate.hpp"
 #include "catplan/rewrite/dpo.hpp"
 
@@ -222,25 +223,6 @@ private:
     IpcStep step_;
 };
 
-/// The variant of `av` the step's arguments are consistent with, as a rule-level step.
-std::optional<plan::Step> rule_step(const Variant& v, const IpcStep& s) {
-    plan::Step step{v.rule->name, std::vector<std::string>(v.rule->parameters.size()), s.range};
-    for (std::size_t i = 0; i < s.args.size(); ++i) {
-        if (v.param_of[i] < 0) {
-            if (s.args[i] != v.constant_of[i]) {
-                return std::nullopt;
-            }
-            continue;
-        }
-        auto& slot = step.args[static_cast<std::size_t>(v.param_of[i])];
-        if (!slot.empty() && slot != s.args[i]) {
-            return std::nullopt;
-        }
-        slot = s.args[i];
-    }
-    return step;
-}
-
 /// The action's atom with the step's arguments in place of its parameters.
 Atom ground(const Action& a, const Atom& atom, const IpcStep& s) {
     Atom g = atom;
@@ -411,7 +393,7 @@ IpcValidation validate_ipc_plan(const Import& im, const IpcPlan& plan) {
         std::string last = "no rule variant fits the arguments";
         bool applied = false;
         for (const auto& var : av->variants) {
-            auto step = rule_step(var, s);
+            auto step = variant_step(var, s);
             if (!step) {
                 continue;
             }
