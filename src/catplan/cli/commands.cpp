@@ -6,6 +6,7 @@
 #include "catplan/base/output_file.hpp"
 #include "catplan/cli/common.hpp"
 #include "catplan/cli/options.hpp"
+#include "catplan/cli/plan_commands.hpp"
 #include "catplan/dot/dot.hpp"
 #include "catplan/hom/hom_search.hpp"
 #include "catplan/hom/morphism.hpp"
@@ -29,23 +30,6 @@
 #include <ostream>
 
 namespace catplan::cli {
-
-// pddl_commands.cpp: `validate` and `plan` on PDDL files.
-bool is_pddl_input(const std::vector<std::string>& files);
-int pddl_validate(const std::vector<std::string>& files, std::ostream& out, std::ostream& err);
-int pddl_plan(const std::vector<std::string>& files, const plan::SearchOptions& options,
-              const std::string& search, const std::string& output, bool timing, bool json,
-              std::ostream& out, std::ostream& err);
-
-/// The lines after a plan (or in place of one): the verdict, the search that ran and why, the
-/// statistics; each line starts with `comment`.
-std::string plan_summary(const plan::SearchResult& r, const std::string& search, std::size_t steps,
-                         bool timing, std::string_view comment);
-/// A planner run as JSON: status, plan (the given steps), the search, the statistics.
-nlohmann::json plan_json(const plan::SearchResult& r, const std::string& search,
-                         nlohmann::json steps, bool timing);
-/// 0 solved, 1 unsolvable, 4 a limit (docs/exit-codes.md).
-int plan_exit_code(plan::SearchStatus status);
 
 namespace {
 
@@ -612,6 +596,14 @@ void add_dot_command(CLI::App& app, CommandTable& table) {
     });
 }
 
+// The positional files and --domain / --problem that `validate` and `plan` share.
+void add_problem_inputs(CLI::App* cmd, std::vector<std::string>& files, std::string& domain,
+                        std::string& problem, const std::string& files_help) {
+    cmd->add_option("FILE", files, files_help)->required()->expected(-1);
+    cmd->add_option("--domain", domain, "the domain (default: the problem's domain)");
+    cmd->add_option("--problem", problem, "the problem declared in FILE (required for a .cp file)");
+}
+
 // Plans: validate, plan.
 void add_plan_commands(CLI::App& app, CommandTable& table) {
     struct Args {
@@ -622,30 +614,17 @@ void add_plan_commands(CLI::App& app, CommandTable& table) {
     auto args = std::make_shared<Args>();
     auto* validate = app.add_subcommand(
         "validate", "Replay a plan on a problem and check its goal (exit 1 when invalid)");
-    validate
-        ->add_option("FILE", args->validate_args.files,
-                     "language file (.cp), or DOMAIN.pddl PROBLEM.pddl PLAN (an IPC plan)")
-        ->required()
-        ->expected(-1);
-    validate->add_option("--domain", args->validate_args.domain,
-                         "the domain (default: the problem's domain)");
-    validate->add_option("--problem", args->validate_args.problem,
-                         "the problem declared in FILE (required for a .cp file)");
+    add_problem_inputs(validate, args->validate_args.files, args->validate_args.domain,
+                       args->validate_args.problem,
+                       "language file (.cp), or DOMAIN.pddl PROBLEM.pddl PLAN (an IPC plan)");
     validate->add_option("--plan", args->validate_args.plan_file,
                          "plan file: one step per line (required for a .cp file)");
     validate->add_flag("--trace", args->validate_args.trace, "print every state as tables");
 
     auto* plan_cmd = app.add_subcommand(
         "plan", "Search for a plan (exit 1 when provably none, 4 when a limit stops the search)");
-    plan_cmd
-        ->add_option("FILE", args->plan_args.files,
-                     "language file (.cp), or DOMAIN.pddl PROBLEM.pddl")
-        ->required()
-        ->expected(-1);
-    plan_cmd->add_option("--domain", args->plan_args.domain,
-                         "the domain (default: the problem's domain)");
-    plan_cmd->add_option("--problem", args->plan_args.problem,
-                         "the problem declared in FILE (required for a .cp file)");
+    add_problem_inputs(plan_cmd, args->plan_args.files, args->plan_args.domain,
+                       args->plan_args.problem, "language file (.cp), or DOMAIN.pddl PROBLEM.pddl");
     plan_cmd
         ->add_option("--search", args->plan_args.search,
                      "lama (lazy greedy, hff and lmcount, preferred operators), lazy (lazy "

@@ -3,6 +3,7 @@
 
 #include "catplan/cli/commands.hpp"
 #include "catplan/cli/common.hpp"
+#include "catplan/cli/plan_commands.hpp"
 #include "catplan/migrate/migration.hpp"
 #include "catplan/pddl/export.hpp"
 #include "catplan/pddl/import.hpp"
@@ -15,21 +16,6 @@
 #include <ostream>
 
 namespace catplan::cli {
-
-/// Whether the positional files of `plan` / `validate` are PDDL (one of them ends in .pddl).
-bool is_pddl_input(const std::vector<std::string>& files);
-/// `catplan validate DOMAIN.pddl PROBLEM.pddl PLAN`.
-int pddl_validate(const std::vector<std::string>& files, std::ostream& out, std::ostream& err);
-/// `catplan plan DOMAIN.pddl PROBLEM.pddl`: the plan in IPC form.
-int pddl_plan(const std::vector<std::string>& files, const plan::SearchOptions& options,
-              const std::string& search, const std::string& output, bool timing, bool json,
-              std::ostream& out, std::ostream& err);
-// commands.cpp: what `plan` prints after a plan, its JSON, its exit code.
-std::string plan_summary(const plan::SearchResult& r, const std::string& search, std::size_t steps,
-                         bool timing, std::string_view comment);
-nlohmann::json plan_json(const plan::SearchResult& r, const std::string& search,
-                         nlohmann::json steps, bool timing);
-int plan_exit_code(plan::SearchStatus status);
 
 namespace {
 
