@@ -5,6 +5,7 @@
 #include "catplan/base/out_of_memory.hpp"
 #include "catplan/base/output_file.hpp"
 #include "catplan/cli/common.hpp"
+#include "catplan/cli/json_output.hpp"
 #include "catplan/cli/options.hpp"
 #include "catplan/cli/plan_commands.hpp"
 #include "catplan/dot/dot.hpp"
@@ -32,140 +33,6 @@
 namespace catplan::cli {
 
 namespace {
-
-// ---- check ----------------------------------------------------------------------------------
-
-int cmd_check(const std::vector<std::string>& files, std::ostream& out, std::ostream& err) {
-    Session s;
-    std::vector<lang::Module> modules;
-    for (const auto& f : files) {
-        modules.push_back(lang::load_file(f, s.sources, s.sink));
-    }
-    if (report(s, err)) {
-        return kBadInput;
-    }
-    for (std::size_t i = 0; i < files.size(); ++i) {
-        for (const auto& d : modules[i].declarations()) {
-            if (!d.imported) {
-                out << lang::summarize(d) << "\n";
-            }
-        }
-    }
-    return kOk;
-}
-
-// ---- show -----------------------------------------------------------------------------------
-
-int cmd_show(const std::string& file, const std::string& name, std::ostream& out,
-             std::ostream& err) {
-    Session s;
-    auto m = load(s, file, err);
-    if (!m) {
-        return kBadInput;
-    }
-    const auto* d = find_declaration(*m, file, name, std::nullopt, err);
-    if (d == nullptr) {
-        return kBadInput;
-    }
-    if (d->kind == lang::DeclKind::Schema) {
-        out << schema::describe(*d->schema);
-    } else if (d->kind == lang::DeclKind::Map) {
-        out << lang::summarize(*d) << "\n" << migrate::map_text(migrate::describe_map(*d->map));
-    } else if (d->kind != lang::DeclKind::Instance) {
-        out << lang::summarize(*d) << "\n";
-    } else {
-        out << fmt::format("instance {} of {}\n", d->name, d->schema->name());
-        out << acset::to_tables(*d->instance);
-    }
-    return kOk;
-}
-
-// ---- homs -----------------------------------------------------------------------------------
-
-std::string format_morphism(const hom::ACSetMorphism& f, const acset::ACSet& x,
-                            const acset::ACSet& y) {
-    const auto& s = x.schema();
-    std::string text;
-    for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
-        ObId ob(o);
-        if (x.num_parts(ob) == 0) {
-            continue;
-        }
-        std::string line;
-        for (Part p = 0; p < x.num_parts(ob); ++p) {
-            line += fmt::format("{}{} ↦ {}", p ? ", " : "", x.part_label(ob, p),
-                                y.part_label(ob, f.components[o][p]));
-        }
-        text += fmt::format("  {}: {}\n", s.ob(ob).name, line);
-    }
-    for (std::uint32_t t = 0; t < s.num_attr_types(); ++t) {
-        AttrTypeId ty(t);
-        if (x.num_vars(ty) == 0) {
-            continue;
-        }
-        std::string line;
-        for (std::uint32_t j = 0; j < x.num_vars(ty); ++j) {
-            line += fmt::format("{}{} ↦ {}", j ? ", " : "", x.value_label(ty, acset::Value::var(j)),
-                                y.value_label(ty, f.var_components[t][j]));
-        }
-        text += fmt::format("  {}: {}\n", s.attr_type(ty).name, line);
-    }
-    return text;
-}
-
-struct HomsArgs {
-    std::string file, from, to;
-    bool monic = false, iso = false, count = false, all = false;
-    std::size_t max = 0;
-};
-
-int cmd_homs(const HomsArgs& a, std::ostream& out, std::ostream& err) {
-    Session s;
-    auto m = load(s, a.file, err);
-    if (!m) {
-        return kBadInput;
-    }
-    const auto* dx = find_declaration(*m, a.file, a.from, lang::DeclKind::Instance, err);
-    const auto* dy = find_declaration(*m, a.file, a.to, lang::DeclKind::Instance, err);
-    if (dx == nullptr || dy == nullptr) {
-        return kBadInput;
-    }
-    if (dx->schema != dy->schema) {
-        error(err, fmt::format("'{}' is on schema {} but '{}' is on schema {}", a.from,
-                               dx->schema->name(), a.to, dy->schema->name()));
-        return kBadInput;
-    }
-    const auto& x = *dx->instance;
-    const auto& y = *dy->instance;
-    hom::HomSearchOptions options;
-    options.monic_all = a.monic;
-    options.iso = a.iso;
-    if (a.count) {
-        auto result = hom::count_homomorphisms(x, y, options);
-        if (!result.error.empty()) {
-            error(err, result.error);
-            return kBadInput;
-        }
-        out << result.count << "\n";
-        return result.count > 0 ? kOk : kNo;
-    }
-    options.max_results = a.all ? a.max : 1; // 0 = no limit
-    auto result = hom::find_homomorphisms(x, y, options);
-    if (!result.error.empty()) {
-        error(err, result.error);
-        return kBadInput;
-    }
-    if (result.morphisms.empty()) {
-        out << fmt::format("no {}homomorphism from {} to {}\n", a.monic ? "monic " : "", a.from,
-                           a.to);
-        return kNo;
-    }
-    for (std::size_t i = 0; i < result.morphisms.size(); ++i) {
-        out << fmt::format("homomorphism {}:\n", i + 1);
-        out << format_morphism(result.morphisms[i], x, y);
-    }
-    return kOk;
-}
 
 // ---- json -----------------------------------------------------------------------------------
 
@@ -272,13 +139,13 @@ int cmd_json_import(const std::vector<std::string>& args, std::string name,
 
 struct ValidateArgs {
     std::vector<std::string> files; // FILE, or DOMAIN.pddl PROBLEM.pddl PLAN
-    std::string domain, problem, plan_file;
+    std::string domain, problem, plan_file, format = "text";
     bool trace = false;
 };
 
 int cmd_validate(const ValidateArgs& a, std::ostream& out, std::ostream& err) {
     if (is_pddl_input(a.files)) {
-        return pddl_validate(a.files, out, err);
+        return pddl_validate(a.files, a.format == "json", out, err);
     }
     if (a.files.size() != 1 || a.problem.empty() || a.plan_file.empty()) {
         error(err, "validate takes FILE --problem P --plan PLAN, or DOMAIN.pddl PROBLEM.pddl PLAN");
@@ -296,6 +163,17 @@ int cmd_validate(const ValidateArgs& a, std::ostream& out, std::ostream& err) {
     plan::ValidateOptions options;
     options.keep_states = true; // the matches are printed against the state they apply to
     auto v = plan::validate_plan(*problem, *plan, options);
+    std::string where;
+    if (v.failed_step && plan->steps[*v.failed_step].range.valid()) {
+        auto r = plan->steps[*v.failed_step].range;
+        auto lc = s.sources.line_col(r.file, r.begin);
+        where = fmt::format("{}:{}:{}", s.sources.name(r.file), lc.line, lc.col);
+    }
+    if (a.format == "json") {
+        out << json_text(validation_json(v.valid, v.goal_reached, v.failed_step, v.reason, where,
+                                         validated_steps_json(*problem, plan->steps, v)));
+        return v.valid ? kOk : kNo;
+    }
     if (a.trace) {
         out << "initial state:\n" << acset::to_tables(v.states[0]);
     }
@@ -314,13 +192,7 @@ int cmd_validate(const ValidateArgs& a, std::ostream& out, std::ostream& err) {
         out << "valid: goal reached\n";
         return kOk;
     }
-    std::string where;
-    if (v.failed_step && plan->steps[*v.failed_step].range.valid()) {
-        auto r = plan->steps[*v.failed_step].range;
-        auto lc = s.sources.line_col(r.file, r.begin);
-        where = fmt::format(" ({}:{}:{})", s.sources.name(r.file), lc.line, lc.col);
-    }
-    out << fmt::format("invalid: {}{}\n", v.reason, where);
+    out << fmt::format("invalid: {}{}\n", v.reason, where.empty() ? "" : " (" + where + ")");
     return kNo;
 }
 
@@ -491,44 +363,6 @@ int cmd_plan(const PlanArgs& a, std::ostream& out, std::ostream& err) {
     return rc;
 }
 
-// The commands on states and schemas: check, show, homs. The arguments live as long as the
-// table's functions that read them.
-void add_state_commands(CLI::App& app, CommandTable& table) {
-    struct Args {
-        std::vector<std::string> check_files;
-        std::string show_file, show_name;
-        HomsArgs homs_args;
-    };
-
-    auto args = std::make_shared<Args>();
-    auto* check = app.add_subcommand("check", "Parse and validate files; one summary line per "
-                                              "declaration");
-    check->add_option("FILE", args->check_files, "language files (.cp)")->required();
-
-    auto* show = app.add_subcommand("show", "Print a state as tables or a schema as lists");
-    show->add_option("FILE", args->show_file)->required();
-    show->add_option("NAME", args->show_name, "a schema or instance declared in FILE")->required();
-
-    auto* homs = app.add_subcommand("homs", "Find homomorphisms between two instances "
-                                            "(exit 1 when there are none)");
-    homs->add_option("FILE", args->homs_args.file)->required();
-    homs->add_option("A", args->homs_args.from, "domain instance")->required();
-    homs->add_option("B", args->homs_args.to, "codomain instance")->required();
-    homs->add_flag("--monic", args->homs_args.monic, "injective on every object");
-    homs->add_flag("--iso", args->homs_args.iso, "isomorphisms only");
-    auto* count_flag = homs->add_flag("--count", args->homs_args.count, "print how many there are");
-    homs->add_flag("--all", args->homs_args.all, "print all of them (default: the first)")
-        ->excludes(count_flag);
-    homs->add_option("--max", args->homs_args.max, "with --all, stop after this many")
-        ->check(positive_count());
-
-    using O = std::ostream;
-    table.add(check, [args](O& o, O& e) { return cmd_check(args->check_files, o, e); });
-    table.add(show,
-              [args](O& o, O& e) { return cmd_show(args->show_file, args->show_name, o, e); });
-    table.add(homs, [args](O& o, O& e) { return cmd_homs(args->homs_args, o, e); });
-}
-
 // Catlab's ACSet JSON: json export, json import.
 void add_json_commands(CLI::App& app, CommandTable& table) {
     struct Args {
@@ -620,6 +454,11 @@ void add_plan_commands(CLI::App& app, CommandTable& table) {
     validate->add_option("--plan", args->validate_args.plan_file,
                          "plan file: one step per line (required for a .cp file)");
     validate->add_flag("--trace", args->validate_args.trace, "print every state as tables");
+    validate
+        ->add_option("--format", args->validate_args.format,
+                     "text or json (steps with their matches, the verdict)")
+        ->check(CLI::IsMember({"text", "json"}))
+        ->capture_default_str();
 
     auto* plan_cmd = app.add_subcommand(
         "plan", "Search for a plan (exit 1 when provably none, 4 when a limit stops the search)");
@@ -678,7 +517,7 @@ int run(int argc, char** argv, std::ostream& out, std::ostream& err) {
     app.set_version_flag("--version", "catplan 0.1.0");
 
     CommandTable table;
-    add_state_commands(app, table);
+    add_inspect_commands(app, table);
     add_json_commands(app, table);
     add_dot_command(app, table);
     add_plan_commands(app, table);

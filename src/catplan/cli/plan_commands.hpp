@@ -15,8 +15,9 @@ namespace catplan::cli {
 
 /// Whether the positional files of `plan` / `validate` are PDDL (one of them ends in .pddl).
 bool is_pddl_input(const std::vector<std::string>& files);
-/// `catplan validate DOMAIN.pddl PROBLEM.pddl PLAN`.
-int pddl_validate(const std::vector<std::string>& files, std::ostream& out, std::ostream& err);
+/// `catplan validate DOMAIN.pddl PROBLEM.pddl PLAN`, as text or (json) docs/json-output.md says.
+int pddl_validate(const std::vector<std::string>& files, bool json, std::ostream& out,
+                  std::ostream& err);
 /// `catplan plan DOMAIN.pddl PROBLEM.pddl`: the plan in IPC form.
 int pddl_plan(const std::vector<std::string>& files, const plan::SearchOptions& options,
               const std::string& search, const std::string& output, bool timing, bool json,
