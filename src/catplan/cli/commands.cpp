@@ -225,8 +225,9 @@ plan::SearchOptions plan_options(const PlanArgs& a, std::ostream& err,
             double search = st.search_seconds();
             err << fmt::format("catplan: searching: expanded {} ({:.0f}/s), evaluated {}, "
                                "generated {}, frontier {}, h {}, {:.1f} MB, {:.1f} s\n",
-                               st.expanded, search > 0 ? st.expanded / search : 0.0, st.evaluated,
-                               st.generated, st.frontier, st.f,
+                               st.expanded,
+                               search > 0 ? static_cast<double>(st.expanded) / search : 0.0,
+                               st.evaluated, st.generated, st.frontier, st.f,
                                static_cast<double>(st.memory) / 1e6, st.seconds);
         }
     };
@@ -295,8 +296,10 @@ nlohmann::json plan_json(const plan::SearchResult& r, const std::string& search,
         stats["setup_seconds"] = st.setup_seconds;
         stats["ground_seconds"] = st.ground_seconds;
         stats["search_seconds"] = search_s;
-        stats["expanded_per_second"] = search_s > 0 ? st.expanded / search_s : 0.0;
-        stats["evaluated_per_second"] = search_s > 0 ? st.evaluated / search_s : 0.0;
+        stats["expanded_per_second"] =
+            search_s > 0 ? static_cast<double>(st.expanded) / search_s : 0.0;
+        stats["evaluated_per_second"] =
+            search_s > 0 ? static_cast<double>(st.evaluated) / search_s : 0.0;
         stats["memory_bytes"] = st.memory;
         stats["peak_memory_bytes"] = st.peak_memory;
     }

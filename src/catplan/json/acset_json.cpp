@@ -471,10 +471,10 @@ private:
             std::size_t found = 0;
             ObId dom = eq.lhs.dom;
             const Node* table = ob_tables_[dom.index()];
-            std::string words = s_.path_to_string(eq.lhs) + " == " + s_.path_to_string(eq.rhs);
-            if (!eq.name.empty()) {
-                words = eq.name + ": " + words;
-            }
+            std::string words = eq.name.empty() ? std::string() : eq.name + ": ";
+            words += s_.path_to_string(eq.lhs);
+            words += " == ";
+            words += s_.path_to_string(eq.rhs);
             for (Part p = 0; p < x.num_parts(dom); ++p) {
                 auto l = follow(x, eq.lhs, p), r = follow(x, eq.rhs, p);
                 if (!l || !r || *l == *r) {
