@@ -75,6 +75,24 @@ public:
 
     std::string_view as_string() const { return u_.s.str(); }
 
+    /// Calls `f` with the payload of a concrete value (bool, std::int64_t, double or
+    /// std::string_view) and returns its result; `otherwise` for a variable or unset.
+    template <class R, class F>
+    R visit_concrete(F&& f, R otherwise) const {
+        switch (tag_) {
+        case Tag::Bool:
+            return f(as_bool());
+        case Tag::Int:
+            return f(as_int());
+        case Tag::Float:
+            return f(as_float());
+        case Tag::String:
+            return f(as_string());
+        default:
+            return otherwise;
+        }
+    }
+
     /// The kind of a concrete value (Unknown for a variable or unset).
     schema::ValueKind kind() const;
 

@@ -5,7 +5,9 @@
 #include "catplan/base/out_of_memory.hpp"
 #include "catplan/base/output_file.hpp"
 #include "catplan/cli/common.hpp"
+#include "catplan/cli/json_output.hpp"
 #include "catplan/cli/options.hpp"
+#include "catplan/cli/plan_commands.hpp"
 #include "catplan/dot/dot.hpp"
 #include "catplan/hom/hom_search.hpp"
 #include "catplan/hom/morphism.hpp"
@@ -30,158 +32,7 @@
 
 namespace catplan::cli {
 
-// pddl_commands.cpp: `validate` and `plan` on PDDL files.
-bool is_pddl_input(const std::vector<std::string>& files);
-int pddl_validate(const std::vector<std::string>& files, std::ostream& out, std::ostream& err);
-int pddl_plan(const std::vector<std::string>& files, const plan::SearchOptions& options,
-              const std::string& search, const std::string& output, bool timing, bool json,
-              std::ostream& out, std::ostream& err);
-
-/// The lines after a plan (or in place of one): the verdict, the search that ran and why, the
-/// statistics; each line starts with `comment`.
-std::string plan_summary(const plan::SearchResult& r, const std::string& search, std::size_t steps,
-                         bool timing, std::string_view comment);
-/// A planner run as JSON: status, plan (the given steps), the search, the statistics.
-nlohmann::json plan_json(const plan::SearchResult& r, const std::string& search,
-                         nlohmann::json steps, bool timing);
-/// 0 solved, 1 unsolvable, 4 a limit (docs/exit-codes.md).
-int plan_exit_code(plan::SearchStatus status);
-
 namespace {
-
-// ---- check ----------------------------------------------------------------------------------
-
-int cmd_check(const std::vector<std::string>& files, std::ostream& out, std::ostream& err) {
-    Session s;
-    std::vector<lang::Module> modules;
-    for (const auto& f : files) {
-        modules.push_back(lang::load_file(f, s.sources, s.sink));
-    }
-    if (report(s, err)) {
-        return kBadInput;
-    }
-    for (std::size_t i = 0; i < files.size(); ++i) {
-        for (const auto& d : modules[i].declarations()) {
-            if (!d.imported) {
-                out << lang::summarize(d) << "\n";
-            }
-        }
-    }
-    return kOk;
-}
-
-// ---- show -----------------------------------------------------------------------------------
-
-int cmd_show(const std::string& file, const std::string& name, std::ostream& out,
-             std::ostream& err) {
-    Session s;
-    auto m = load(s, file, err);
-    if (!m) {
-        return kBadInput;
-    }
-    const auto* d = find_declaration(*m, file, name, std::nullopt, err);
-    if (d == nullptr) {
-        return kBadInput;
-    }
-    if (d->kind == lang::DeclKind::Schema) {
-        out << schema::describe(*d->schema);
-    } else if (d->kind == lang::DeclKind::Map) {
-        out << lang::summarize(*d) << "\n" << migrate::map_text(migrate::describe_map(*d->map));
-    } else if (d->kind != lang::DeclKind::Instance) {
-        out << lang::summarize(*d) << "\n";
-    } else {
-        out << fmt::format("instance {} of {}\n", d->name, d->schema->name());
-        out << acset::to_tables(*d->instance);
-    }
-    return kOk;
-}
-
-// ---- homs -----------------------------------------------------------------------------------
-
-std::string format_morphism(const hom::ACSetMorphism& f, const acset::ACSet& x,
-                            const acset::ACSet& y) {
-    const auto& s = x.schema();
-    std::string text;
-    for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
-        ObId ob(o);
-        if (x.num_parts(ob) == 0) {
-            continue;
-        }
-        std::string line;
-        for (Part p = 0; p < x.num_parts(ob); ++p) {
-            line += fmt::format("{}{} ↦ {}", p ? ", " : "", x.part_label(ob, p),
-                                y.part_label(ob, f.components[o][p]));
-        }
-        text += fmt::format("  {}: {}\n", s.ob(ob).name, line);
-    }
-    for (std::uint32_t t = 0; t < s.num_attr_types(); ++t) {
-        AttrTypeId ty(t);
-        if (x.num_vars(ty) == 0) {
-            continue;
-        }
-        std::string line;
-        for (std::uint32_t j = 0; j < x.num_vars(ty); ++j) {
-            line += fmt::format("{}{} ↦ {}", j ? ", " : "", x.value_label(ty, acset::Value::var(j)),
-                                y.value_label(ty, f.var_components[t][j]));
-        }
-        text += fmt::format("  {}: {}\n", s.attr_type(ty).name, line);
-    }
-    return text;
-}
-
-struct HomsArgs {
-    std::string file, from, to;
-    bool monic = false, iso = false, count = false, all = false;
-    std::size_t max = 0;
-};
-
-int cmd_homs(const HomsArgs& a, std::ostream& out, std::ostream& err) {
-    Session s;
-    auto m = load(s, a.file, err);
-    if (!m) {
-        return kBadInput;
-    }
-    const auto* dx = find_declaration(*m, a.file, a.from, lang::DeclKind::Instance, err);
-    const auto* dy = find_declaration(*m, a.file, a.to, lang::DeclKind::Instance, err);
-    if (dx == nullptr || dy == nullptr) {
-        return kBadInput;
-    }
-    if (dx->schema != dy->schema) {
-        error(err, fmt::format("'{}' is on schema {} but '{}' is on schema {}", a.from,
-                               dx->schema->name(), a.to, dy->schema->name()));
-        return kBadInput;
-    }
-    const auto& x = *dx->instance;
-    const auto& y = *dy->instance;
-    hom::HomSearchOptions options;
-    options.monic_all = a.monic;
-    options.iso = a.iso;
-    if (a.count) {
-        auto result = hom::count_homomorphisms(x, y, options);
-        if (!result.error.empty()) {
-            error(err, result.error);
-            return kBadInput;
-        }
-        out << result.count << "\n";
-        return result.count > 0 ? kOk : kNo;
-    }
-    options.max_results = a.all ? a.max : 1; // 0 = no limit
-    auto result = hom::find_homomorphisms(x, y, options);
-    if (!result.error.empty()) {
-        error(err, result.error);
-        return kBadInput;
-    }
-    if (result.morphisms.empty()) {
-        out << fmt::format("no {}homomorphism from {} to {}\n", a.monic ? "monic " : "", a.from,
-                           a.to);
-        return kNo;
-    }
-    for (std::size_t i = 0; i < result.morphisms.size(); ++i) {
-        out << fmt::format("homomorphism {}:\n", i + 1);
-        out << format_morphism(result.morphisms[i], x, y);
-    }
-    return kOk;
-}
 
 // ---- json -----------------------------------------------------------------------------------
 
@@ -288,13 +139,13 @@ int cmd_json_import(const std::vector<std::string>& args, std::string name,
 
 struct ValidateArgs {
     std::vector<std::string> files; // FILE, or DOMAIN.pddl PROBLEM.pddl PLAN
-    std::string domain, problem, plan_file;
+    std::string domain, problem, plan_file, format = "text";
     bool trace = false;
 };
 
 int cmd_validate(const ValidateArgs& a, std::ostream& out, std::ostream& err) {
     if (is_pddl_input(a.files)) {
-        return pddl_validate(a.files, out, err);
+        return pddl_validate(a.files, a.format == "json", out, err);
     }
     if (a.files.size() != 1 || a.problem.empty() || a.plan_file.empty()) {
         error(err, "validate takes FILE --problem P --plan PLAN, or DOMAIN.pddl PROBLEM.pddl PLAN");
@@ -312,6 +163,17 @@ int cmd_validate(const ValidateArgs& a, std::ostream& out, std::ostream& err) {
     plan::ValidateOptions options;
     options.keep_states = true; // the matches are printed against the state they apply to
     auto v = plan::validate_plan(*problem, *plan, options);
+    std::string where;
+    if (v.failed_step && plan->steps[*v.failed_step].range.valid()) {
+        auto r = plan->steps[*v.failed_step].range;
+        auto lc = s.sources.line_col(r.file, r.begin);
+        where = fmt::format("{}:{}:{}", s.sources.name(r.file), lc.line, lc.col);
+    }
+    if (a.format == "json") {
+        out << json_text(validation_json(v.valid, v.goal_reached, v.failed_step, v.reason, where,
+                                         validated_steps_json(*problem, plan->steps, v)));
+        return v.valid ? kOk : kNo;
+    }
     if (a.trace) {
         out << "initial state:\n" << acset::to_tables(v.states[0]);
     }
@@ -330,13 +192,7 @@ int cmd_validate(const ValidateArgs& a, std::ostream& out, std::ostream& err) {
         out << "valid: goal reached\n";
         return kOk;
     }
-    std::string where;
-    if (v.failed_step && plan->steps[*v.failed_step].range.valid()) {
-        auto r = plan->steps[*v.failed_step].range;
-        auto lc = s.sources.line_col(r.file, r.begin);
-        where = fmt::format(" ({}:{}:{})", s.sources.name(r.file), lc.line, lc.col);
-    }
-    out << fmt::format("invalid: {}{}\n", v.reason, where);
+    out << fmt::format("invalid: {}{}\n", v.reason, where.empty() ? "" : " (" + where + ")");
     return kNo;
 }
 
@@ -369,8 +225,9 @@ plan::SearchOptions plan_options(const PlanArgs& a, std::ostream& err,
             double search = st.search_seconds();
             err << fmt::format("catplan: searching: expanded {} ({:.0f}/s), evaluated {}, "
                                "generated {}, frontier {}, h {}, {:.1f} MB, {:.1f} s\n",
-                               st.expanded, search > 0 ? st.expanded / search : 0.0, st.evaluated,
-                               st.generated, st.frontier, st.f,
+                               st.expanded,
+                               search > 0 ? static_cast<double>(st.expanded) / search : 0.0,
+                               st.evaluated, st.generated, st.frontier, st.f,
                                static_cast<double>(st.memory) / 1e6, st.seconds);
         }
     };
@@ -439,8 +296,10 @@ nlohmann::json plan_json(const plan::SearchResult& r, const std::string& search,
         stats["setup_seconds"] = st.setup_seconds;
         stats["ground_seconds"] = st.ground_seconds;
         stats["search_seconds"] = search_s;
-        stats["expanded_per_second"] = search_s > 0 ? st.expanded / search_s : 0.0;
-        stats["evaluated_per_second"] = search_s > 0 ? st.evaluated / search_s : 0.0;
+        stats["expanded_per_second"] =
+            search_s > 0 ? static_cast<double>(st.expanded) / search_s : 0.0;
+        stats["evaluated_per_second"] =
+            search_s > 0 ? static_cast<double>(st.evaluated) / search_s : 0.0;
         stats["memory_bytes"] = st.memory;
         stats["peak_memory_bytes"] = st.peak_memory;
     }
@@ -505,44 +364,6 @@ int cmd_plan(const PlanArgs& a, std::ostream& out, std::ostream& err) {
     }
     out << text << plan_summary(r, a.search, r.plan ? r.plan->steps.size() : 0, !a.no_timing, "# ");
     return rc;
-}
-
-// The commands on states and schemas: check, show, homs. The arguments live as long as the
-// table's functions that read them.
-void add_state_commands(CLI::App& app, CommandTable& table) {
-    struct Args {
-        std::vector<std::string> check_files;
-        std::string show_file, show_name;
-        HomsArgs homs_args;
-    };
-
-    auto args = std::make_shared<Args>();
-    auto* check = app.add_subcommand("check", "Parse and validate files; one summary line per "
-                                              "declaration");
-    check->add_option("FILE", args->check_files, "language files (.cp)")->required();
-
-    auto* show = app.add_subcommand("show", "Print a state as tables or a schema as lists");
-    show->add_option("FILE", args->show_file)->required();
-    show->add_option("NAME", args->show_name, "a schema or instance declared in FILE")->required();
-
-    auto* homs = app.add_subcommand("homs", "Find homomorphisms between two instances "
-                                            "(exit 1 when there are none)");
-    homs->add_option("FILE", args->homs_args.file)->required();
-    homs->add_option("A", args->homs_args.from, "domain instance")->required();
-    homs->add_option("B", args->homs_args.to, "codomain instance")->required();
-    homs->add_flag("--monic", args->homs_args.monic, "injective on every object");
-    homs->add_flag("--iso", args->homs_args.iso, "isomorphisms only");
-    auto* count_flag = homs->add_flag("--count", args->homs_args.count, "print how many there are");
-    homs->add_flag("--all", args->homs_args.all, "print all of them (default: the first)")
-        ->excludes(count_flag);
-    homs->add_option("--max", args->homs_args.max, "with --all, stop after this many")
-        ->check(positive_count());
-
-    using O = std::ostream;
-    table.add(check, [args](O& o, O& e) { return cmd_check(args->check_files, o, e); });
-    table.add(show,
-              [args](O& o, O& e) { return cmd_show(args->show_file, args->show_name, o, e); });
-    table.add(homs, [args](O& o, O& e) { return cmd_homs(args->homs_args, o, e); });
 }
 
 // Catlab's ACSet JSON: json export, json import.
@@ -612,6 +433,14 @@ void add_dot_command(CLI::App& app, CommandTable& table) {
     });
 }
 
+// The positional files and --domain / --problem that `validate` and `plan` share.
+void add_problem_inputs(CLI::App* cmd, std::vector<std::string>& files, std::string& domain,
+                        std::string& problem, const std::string& files_help) {
+    cmd->add_option("FILE", files, files_help)->required()->expected(-1);
+    cmd->add_option("--domain", domain, "the domain (default: the problem's domain)");
+    cmd->add_option("--problem", problem, "the problem declared in FILE (required for a .cp file)");
+}
+
 // Plans: validate, plan.
 void add_plan_commands(CLI::App& app, CommandTable& table) {
     struct Args {
@@ -622,30 +451,22 @@ void add_plan_commands(CLI::App& app, CommandTable& table) {
     auto args = std::make_shared<Args>();
     auto* validate = app.add_subcommand(
         "validate", "Replay a plan on a problem and check its goal (exit 1 when invalid)");
-    validate
-        ->add_option("FILE", args->validate_args.files,
-                     "language file (.cp), or DOMAIN.pddl PROBLEM.pddl PLAN (an IPC plan)")
-        ->required()
-        ->expected(-1);
-    validate->add_option("--domain", args->validate_args.domain,
-                         "the domain (default: the problem's domain)");
-    validate->add_option("--problem", args->validate_args.problem,
-                         "the problem declared in FILE (required for a .cp file)");
+    add_problem_inputs(validate, args->validate_args.files, args->validate_args.domain,
+                       args->validate_args.problem,
+                       "language file (.cp), or DOMAIN.pddl PROBLEM.pddl PLAN (an IPC plan)");
     validate->add_option("--plan", args->validate_args.plan_file,
                          "plan file: one step per line (required for a .cp file)");
     validate->add_flag("--trace", args->validate_args.trace, "print every state as tables");
+    validate
+        ->add_option("--format", args->validate_args.format,
+                     "text or json (steps with their matches, the verdict)")
+        ->check(CLI::IsMember({"text", "json"}))
+        ->capture_default_str();
 
     auto* plan_cmd = app.add_subcommand(
         "plan", "Search for a plan (exit 1 when provably none, 4 when a limit stops the search)");
-    plan_cmd
-        ->add_option("FILE", args->plan_args.files,
-                     "language file (.cp), or DOMAIN.pddl PROBLEM.pddl")
-        ->required()
-        ->expected(-1);
-    plan_cmd->add_option("--domain", args->plan_args.domain,
-                         "the domain (default: the problem's domain)");
-    plan_cmd->add_option("--problem", args->plan_args.problem,
-                         "the problem declared in FILE (required for a .cp file)");
+    add_problem_inputs(plan_cmd, args->plan_args.files, args->plan_args.domain,
+                       args->plan_args.problem, "language file (.cp), or DOMAIN.pddl PROBLEM.pddl");
     plan_cmd
         ->add_option("--search", args->plan_args.search,
                      "lama (lazy greedy, hff and lmcount, preferred operators), lazy (lazy "
@@ -699,7 +520,7 @@ int run(int argc, char** argv, std::ostream& out, std::ostream& err) {
     app.set_version_flag("--version", "catplan 0.1.0");
 
     CommandTable table;
-    add_state_commands(app, table);
+    add_inspect_commands(app, table);
     add_json_commands(app, table);
     add_dot_command(app, table);
     add_plan_commands(app, table);

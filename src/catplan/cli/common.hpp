@@ -172,6 +172,8 @@ private:
     std::vector<std::pair<CLI::App*, Run>> entries_;
 };
 
+/// Adds `check`, `show` and `homs` (inspect_commands.cpp).
+void add_inspect_commands(CLI::App& app, CommandTable& table);
 /// Adds `migrate` and `migrate-domain` (migrate_commands.cpp).
 void add_migrate_commands(CLI::App& app, CommandTable& table);
 /// Adds `transfer` (transfer_commands.cpp).

@@ -4,6 +4,7 @@
 #include "catplan/acset/printer.hpp"
 #include "catplan/cli/commands.hpp"
 #include "catplan/cli/common.hpp"
+#include "catplan/cli/json_output.hpp"
 #include "catplan/json/json.hpp"
 #include "catplan/migrate/migration.hpp"
 #include "catplan/migrate/sigma.hpp"
@@ -11,6 +12,7 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <ostream>
 
 namespace catplan::cli {
@@ -88,7 +90,7 @@ int cmd_migrate(const MigrateArgs& a, std::ostream& out, std::ostream& err) {
 }
 
 struct MigrateDomainArgs {
-    std::string file, map, domain;
+    std::string file, map, domain, format = "text";
 };
 
 // Every line of text indented by n spaces.
@@ -120,14 +122,29 @@ int cmd_migrate_domain(const MigrateDomainArgs& a, std::ostream& out, std::ostre
                                d->schema->name(), a.map, f->source()->name()));
         return kBadInput;
     }
-    out << fmt::format("domain {} migrated along {}, on {}\n", a.domain, a.map,
-                       f->target()->name());
+    bool json = a.format == "json";
+    nlohmann::json doc = {{"domain", a.domain}, {"map", a.map}, {"schema", f->target()->name()}};
+    doc["rules"] = nlohmann::json::array();
+    if (!json) {
+        out << fmt::format("domain {} migrated along {}, on {}\n", a.domain, a.map,
+                           f->target()->name());
+    }
     int rc = kOk;
     for (const auto& rule : d->domain->rules) {
         auto migrated = migrate::migrate(*f, *rule);
         if (!migrated) {
-            out << fmt::format("  {}: not migrated: {}\n", rule->name, migrated.error());
+            doc["rules"].push_back({{"name", rule->name}, {"error", migrated.error()}});
+            out << (json ? ""
+                         : fmt::format("  {}: not migrated: {}\n", rule->name, migrated.error()));
             rc = kUnsupported;
+            continue;
+        }
+        doc["rules"].push_back({{"name", migrated->name},
+                                {"summary", lang::summarize_rule(*migrated)},
+                                {"Pre", acset_value(migrated->L)},
+                                {"Keep", acset_value(migrated->K)},
+                                {"Eff", acset_value(migrated->R)}});
+        if (json) {
             continue;
         }
         out << "  " << lang::summarize_rule(*migrated) << "\n";
@@ -136,6 +153,7 @@ int cmd_migrate_domain(const MigrateDomainArgs& a, std::ostream& out, std::ostre
             out << fmt::format("    {}:\n{}", label, indent(acset::to_tables(*state), 6));
         }
     }
+    out << (json ? json_text(doc) : "");
     return rc;
 }
 
@@ -178,6 +196,11 @@ void add_migrate_commands(CLI::App& app, CommandTable& table) {
     domain_cmd->add_option("--map", domain_args->map, "a map declared in FILE")->required();
     domain_cmd->add_option("--domain", domain_args->domain, "a domain on the map's source schema")
         ->required();
+    domain_cmd
+        ->add_option("--format", domain_args->format,
+                     "text (tables) or json (each rule's Pre, Keep and Eff as Catlab's ACSet JSON)")
+        ->check(CLI::IsMember({"text", "json"}))
+        ->capture_default_str();
     table.add(domain_cmd, [domain_args](std::ostream& o, std::ostream& e) {
         return cmd_migrate_domain(*domain_args, o, e);
     });

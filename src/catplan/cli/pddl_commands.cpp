@@ -3,11 +3,14 @@
 
 #include "catplan/cli/commands.hpp"
 #include "catplan/cli/common.hpp"
+#include "catplan/cli/json_output.hpp"
+#include "catplan/cli/plan_commands.hpp"
 #include "catplan/migrate/migration.hpp"
 #include "catplan/pddl/export.hpp"
 #include "catplan/pddl/import.hpp"
 #include "catplan/pddl/ipc_plan.hpp"
 #include "catplan/plan/search.hpp"
+#include "catplan/plan/validate.hpp"
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
@@ -15,21 +18,6 @@
 #include <ostream>
 
 namespace catplan::cli {
-
-/// Whether the positional files of `plan` / `validate` are PDDL (one of them ends in .pddl).
-bool is_pddl_input(const std::vector<std::string>& files);
-/// `catplan validate DOMAIN.pddl PROBLEM.pddl PLAN`.
-int pddl_validate(const std::vector<std::string>& files, std::ostream& out, std::ostream& err);
-/// `catplan plan DOMAIN.pddl PROBLEM.pddl`: the plan in IPC form.
-int pddl_plan(const std::vector<std::string>& files, const plan::SearchOptions& options,
-              const std::string& search, const std::string& output, bool timing, bool json,
-              std::ostream& out, std::ostream& err);
-// commands.cpp: what `plan` prints after a plan, its JSON, its exit code.
-std::string plan_summary(const plan::SearchResult& r, const std::string& search, std::size_t steps,
-                         bool timing, std::string_view comment);
-nlohmann::json plan_json(const plan::SearchResult& r, const std::string& search,
-                         nlohmann::json steps, bool timing);
-int plan_exit_code(plan::SearchStatus status);
 
 namespace {
 
@@ -84,14 +72,31 @@ std::string import_text(const pddl::Import& im, const std::string& domain_file) 
     return out;
 }
 
-int cmd_pddl_import(const std::vector<std::string>& files, const std::string& output,
+/// `pddl import --format json`: the schema, the initial state and goal, the rules of each action.
+nlohmann::json import_json(const pddl::Import& im) {
+    nlohmann::json j;
+    j["schema"] = schema_value(*im.domain->schema);
+    j["initial"] = im.problem ? acset_value(*im.problem->initial) : nlohmann::json(nullptr);
+    j["goal"] = im.problem ? acset_value(*im.problem->goal) : nlohmann::json(nullptr);
+    j["actions"] = nlohmann::json::array();
+    for (const auto& a : im.actions) {
+        nlohmann::json rules = nlohmann::json::array();
+        for (const auto& v : a.variants) {
+            rules.push_back({{"name", v.rule->name}, {"summary", lang::summarize_rule(*v.rule)}});
+        }
+        j["actions"].push_back({{"action", a.action}, {"rules", std::move(rules)}});
+    }
+    return j;
+}
+
+int cmd_pddl_import(const std::vector<std::string>& files, const std::string& output, bool json,
                     std::ostream& out, std::ostream& err) {
     Session s;
     auto im = load_pddl(s, files[0], files.size() > 1 ? files[1] : "", err);
     if (!im) {
         return kBadInput;
     }
-    return emit(import_text(*im, files[0]), output, out, err);
+    return emit(json ? json_text(import_json(*im)) : import_text(*im, files[0]), output, out, err);
 }
 
 struct ExportArgs {
@@ -204,6 +209,27 @@ std::string where(const Session& s, SourceRange r) {
     return fmt::format(" ({}:{}:{})", s.sources.name(r.file), lc.line, lc.col);
 }
 
+/// `validate --format json` on PDDL: each step applied with its IPC action and arguments, the
+/// rule variant that applied and its match (replayed as DPO steps to find the matches).
+nlohmann::json ipc_validation_json(const Session& s, const pddl::Import& im,
+                                   const pddl::IpcPlan& plan, const pddl::IpcValidation& v) {
+    plan::ValidateOptions options;
+    options.keep_states = true;
+    auto replay = plan::validate_plan(*im.problem, v.plan, options);
+    nlohmann::json rule_steps = validated_steps_json(*im.problem, v.plan.steps, replay);
+    nlohmann::json steps = nlohmann::json::array();
+    for (std::size_t i = 0; i < rule_steps.size(); ++i) {
+        auto step = step_json(plan[i].action, plan[i].args, rule_steps[i]["match"]);
+        step["rule"] = v.plan.steps[i].to_string();
+        steps.push_back(std::move(step));
+    }
+    std::string at = v.failed_step ? where(s, plan[*v.failed_step].range) : "";
+    if (at.size() > 3) {
+        at = at.substr(2, at.size() - 3); // " (f:l:c)" -> "f:l:c"
+    }
+    return validation_json(v.valid, v.goal_reached, v.failed_step, v.reason, at, std::move(steps));
+}
+
 } // namespace
 
 bool is_pddl_input(const std::vector<std::string>& files) {
@@ -212,7 +238,8 @@ bool is_pddl_input(const std::vector<std::string>& files) {
     });
 }
 
-int pddl_validate(const std::vector<std::string>& files, std::ostream& out, std::ostream& err) {
+int pddl_validate(const std::vector<std::string>& files, bool json, std::ostream& out,
+                  std::ostream& err) {
     if (files.size() != 3) {
         error(err, "validate on PDDL takes DOMAIN.pddl PROBLEM.pddl PLAN");
         return kBadInput;
@@ -234,6 +261,10 @@ int pddl_validate(const std::vector<std::string>& files, std::ostream& out, std:
         return kBadInput;
     }
     auto v = pddl::validate_ipc_plan(*im, *plan);
+    if (json) {
+        out << json_text(ipc_validation_json(s, *im, *plan, v));
+        return v.valid ? kOk : kNo;
+    }
     for (std::size_t i = 0; i < v.plan.steps.size(); ++i) {
         out << fmt::format("{}. {}   [rule {}]\n", i + 1, (*plan)[i].to_string(),
                            v.plan.steps[i].to_string());
@@ -293,14 +324,18 @@ void add_pddl_commands(CLI::App& app, CommandTable& table) {
 
     static std::vector<std::string> import_files;
     static std::string import_output;
+    static std::string import_format = "text";
     auto* imp = pddl_cmd->add_subcommand(
         "import", "Read a PDDL domain (and problem) and print it in catplan's language");
     imp->add_option("FILES", import_files, "DOMAIN.pddl [PROBLEM.pddl]")
         ->required()
         ->expected(1, 2);
     imp->add_option("-o,--output", import_output, "write to this file instead of stdout");
+    imp->add_option("--format", import_format, "text (catplan's language) or json")
+        ->check(CLI::IsMember({"text", "json"}))
+        ->capture_default_str();
     table.add(imp, [](std::ostream& o, std::ostream& e) {
-        return cmd_pddl_import(import_files, import_output, o, e);
+        return cmd_pddl_import(import_files, import_output, import_format == "json", o, e);
     });
 
     static ExportArgs ea;

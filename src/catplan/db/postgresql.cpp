@@ -1,6 +1,7 @@
 // The PostgreSQL engine (Debian's libpq): statements as text, rows read in single-row mode (so a
 // result never has to fit in memory) and bulk insertion through COPY FROM STDIN in text format.
 
+#include "catplan/base/escape.hpp"
 #include "catplan/db/detail/engines.hpp"
 
 #include <charconv>
@@ -109,24 +110,20 @@ void copy_cell(std::string& out, const SqlValue& v) {
     } else if (const auto* b = std::get_if<bool>(&v)) {
         out += *b ? 't' : 'f';
     } else if (const auto* t = std::get_if<std::string_view>(&v)) {
-        for (char ch : *t) {
-            switch (ch) {
+        out += escape_chars(*t, [](char c) -> std::optional<std::string_view> {
+            switch (c) {
             case '\\':
-                out += "\\\\";
-                break;
+                return "\\\\";
             case '\n':
-                out += "\\n";
-                break;
+                return "\\n";
             case '\r':
-                out += "\\r";
-                break;
+                return "\\r";
             case '\t':
-                out += "\\t";
-                break;
+                return "\\t";
             default:
-                out += ch;
+                return std::nullopt;
             }
-        }
+        });
     } else {
         out += "\\N";
     }

@@ -113,18 +113,7 @@ namespace {
 
 // A cell of an attribute column as SQL: the value, or NULL (then the variable goes beside it).
 SqlValue sql_value(const Value& v) {
-    switch (v.tag()) {
-    case Value::Tag::Bool:
-        return v.as_bool();
-    case Value::Tag::Int:
-        return v.as_int();
-    case Value::Tag::Float:
-        return v.as_float();
-    case Value::Tag::String:
-        return v.as_string();
-    default:
-        return std::monostate{};
-    }
+    return v.visit_concrete([](auto x) { return SqlValue(x); }, SqlValue{});
 }
 
 SqlValue name_value(std::string_view name) {
@@ -325,29 +314,23 @@ bool check_tables(Connection& c, const Layout& l, Errors& errors) {
     return errors.list.size() + errors.more == before;
 }
 
+// A cell read as `T`, made into a value, or nullopt (the cell has another type).
+template <class T, class Make>
+std::optional<Value> cell_value(const std::optional<T>& cell, Make make) {
+    return cell ? std::optional<Value>(make(*cell)) : std::nullopt;
+}
+
 // A value of kind `kind` read from column i, or nullopt (the cell has another type).
 std::optional<Value> read_value(const Row& r, std::size_t i, schema::ValueKind kind) {
     switch (kind) {
     case schema::ValueKind::Bool:
-        if (auto b = r.boolean(i)) {
-            return Value::boolean(*b);
-        }
-        return std::nullopt;
+        return cell_value(r.boolean(i), Value::boolean);
     case schema::ValueKind::Int:
-        if (auto v = r.integer(i)) {
-            return Value::integer(*v);
-        }
-        return std::nullopt;
+        return cell_value(r.integer(i), Value::integer);
     case schema::ValueKind::Float:
-        if (auto v = r.real(i)) {
-            return Value::real(*v);
-        }
-        return std::nullopt;
+        return cell_value(r.real(i), Value::real);
     case schema::ValueKind::String:
-        if (auto v = r.text(i)) {
-            return Value::string(*v);
-        }
-        return std::nullopt;
+        return cell_value(r.text(i), [](const std::string& t) { return Value::string(t); });
     default:
         return std::nullopt;
     }

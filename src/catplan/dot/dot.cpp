@@ -1,6 +1,7 @@
 #include "catplan/dot/dot.hpp"
 
 #include "catplan/base/assert.hpp"
+#include "catplan/base/escape.hpp"
 #include "catplan/migrate/describe.hpp"
 
 #include <algorithm>
@@ -35,59 +36,44 @@ std::string dot_id(std::string_view s) {
 }
 
 std::string escape_quoted(std::string_view s) {
-    std::string out;
-    out.reserve(s.size());
-    for (char c : s) {
+    return escape_chars(s, [](char c) -> std::optional<std::string_view> {
         switch (c) {
         case '"':
-            out += "\\\"";
-            break;
+            return "\\\"";
         case '\\':
             // Graphviz reads \N, \G, \l ... in labels as escapes; "\\" is a plain backslash.
-            out += "\\\\";
-            break;
+            return "\\\\";
         case '\n':
-            out += "\\n";
-            break;
+            return "\\n";
         case '\r':
-            break;
+            return "";
         default:
-            out += c;
+            return std::nullopt;
         }
-    }
-    return out;
+    });
 }
 
 std::string escape_html(std::string_view s) {
-    std::string out;
-    out.reserve(s.size());
-    for (char c : s) {
+    return escape_chars(s, [](char c) -> std::optional<std::string_view> {
         switch (c) {
         case '&':
-            out += "&amp;";
-            break;
+            return "&amp;";
         case '<':
-            out += "&lt;";
-            break;
+            return "&lt;";
         case '>':
-            out += "&gt;";
-            break;
+            return "&gt;";
         case '"':
-            out += "&quot;";
-            break;
+            return "&quot;";
         case '\'':
-            out += "&#39;";
-            break;
+            return "&#39;";
         case '\n':
-            out += "<BR/>";
-            break;
+            return "<BR/>";
         case '\r':
-            break;
+            return "";
         default:
-            out += c;
+            return std::nullopt;
         }
-    }
-    return out;
+    });
 }
 
 namespace {

@@ -26,24 +26,20 @@ std::int64_t to_json_id(Part p) {
 }
 
 OrderedJson value_to_json(const Value& v) {
-    switch (v.tag()) {
-    case Value::Tag::Unset:
-        return nullptr;
-    case Value::Tag::Var: {
+    if (v.is_var()) {
         OrderedJson var = OrderedJson::object();
         var["_var"] = static_cast<std::int64_t>(v.var_index()) + 1;
         return var;
     }
-    case Value::Tag::Bool:
-        return v.as_bool();
-    case Value::Tag::Int:
-        return v.as_int();
-    case Value::Tag::Float:
-        return v.as_float();
-    case Value::Tag::String:
-        return std::string(v.as_string());
-    }
-    return nullptr;
+    return v.visit_concrete(
+        [](auto x) {
+            if constexpr (std::is_same_v<decltype(x), std::string_view>) {
+                return OrderedJson(std::string(x));
+            } else {
+                return OrderedJson(x);
+            }
+        },
+        OrderedJson(nullptr));
 }
 
 } // namespace
@@ -475,10 +471,10 @@ private:
             std::size_t found = 0;
             ObId dom = eq.lhs.dom;
             const Node* table = ob_tables_[dom.index()];
-            std::string words = s_.path_to_string(eq.lhs) + " == " + s_.path_to_string(eq.rhs);
-            if (!eq.name.empty()) {
-                words = eq.name + ": " + words;
-            }
+            std::string words = eq.name.empty() ? std::string() : eq.name + ": ";
+            words += s_.path_to_string(eq.lhs);
+            words += " == ";
+            words += s_.path_to_string(eq.rhs);
             for (Part p = 0; p < x.num_parts(dom); ++p) {
                 auto l = follow(x, eq.lhs, p), r = follow(x, eq.rhs, p);
                 if (!l || !r || *l == *r) {

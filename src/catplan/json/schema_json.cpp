@@ -192,17 +192,7 @@ private:
         if (!gen) {
             return "not declared";
         }
-        switch (gen->kind) {
-        case GeneratorKind::Ob:
-            return "an object";
-        case GeneratorKind::Hom:
-            return "a hom";
-        case GeneratorKind::AttrType:
-            return "an attribute type";
-        case GeneratorKind::Attr:
-            return "an attribute";
-        }
-        return "something else";
+        return schema::kind_noun(gen->kind);
     }
 
     void read_ob(const Node& e) {

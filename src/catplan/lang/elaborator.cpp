@@ -64,20 +64,6 @@ Declaration new_declaration(DeclKind kind, std::string name, SourceRange range, 
     return d;
 }
 
-const char* kind_noun(GeneratorKind k) {
-    switch (k) {
-    case GeneratorKind::Ob:
-        return "an object";
-    case GeneratorKind::Hom:
-        return "a hom";
-    case GeneratorKind::AttrType:
-        return "an attribute type";
-    case GeneratorKind::Attr:
-        return "an attribute";
-    }
-    return "a generator";
-}
-
 // A Julia symbol (`:a`, what Catlab code writes for Symbol attributes) is a String literal.
 bool is_literal(const Expr& e) {
     return e.kind == Expr::Kind::Int || e.kind == Expr::Kind::Float ||

@@ -9,6 +9,7 @@
 // an equation.
 
 #include "catplan/base/assert.hpp"
+#include "catplan/migrate/detail/loc.hpp"
 #include "catplan/migrate/schema_map.hpp"
 
 #include <utility>
@@ -27,28 +28,8 @@ std::string problems_text(const std::vector<MapProblem>& problems) {
     return s;
 }
 
-// A place in a query's shape reached from a part of another query: a part and a suffix of homs.
-struct Loc {
-    ObId ob;
-    Part part = kNoPart;
-    std::vector<HomId> suffix;
-};
-
-// Carries a Loc in the query of hom f's codomain to the query of its domain (first's image of f).
-Loc step(const SchemaMap& m, HomId f, Loc loc) {
-    const HomImage& im = m.hom_image(f);
-    const Query& qc = m.query(m.target()->hom(f).dom);
-    if (im.path) {
-        Loc r;
-        r.ob = qc.nodes()[0].ob;
-        r.part = qc.locate_node(0).part;
-        r.suffix = *im.path;
-        r.suffix.insert(r.suffix.end(), loc.suffix.begin(), loc.suffix.end());
-        return r;
-    }
-    loc.part = (*im.morphism)(loc.ob, loc.part);
-    return loc;
-}
+using detail::Loc;
+using detail::step_back;
 
 Term loc_term(const Query& q, const Loc& loc, std::optional<AttrId> attr = std::nullopt) {
     Term w = q.witness(loc.ob, loc.part);
@@ -123,7 +104,7 @@ Result<SchemaMap> second_delta(const SchemaMap& first, const SchemaMap& second) 
             if (!el.is_value) {
                 Loc loc{el.ob, el.part, {}};
                 for (auto it = path.rbegin(); it != path.rend(); ++it) {
-                    loc = step(first, *it, loc);
+                    loc = step_back(first, *it, loc);
                 }
                 terms.push_back(loc_term(qc, loc));
             } else {
@@ -168,7 +149,7 @@ Result<SchemaMap> second_delta(const SchemaMap& first, const SchemaMap& second) 
         case AttrImage::Kind::Path: {
             Loc loc{im1.start_ob, im1.start, im1.homs};
             for (auto it = path.rbegin(); it != path.rend(); ++it) {
-                loc = step(first, *it, loc);
+                loc = step_back(first, *it, loc);
             }
             out.map_attr(AttrId(a), loc_term(qc, loc, im1.attr));
             break;

@@ -2,6 +2,7 @@
 
 #include "catplan/base/assert.hpp"
 #include "catplan/hom/hom_search.hpp"
+#include "catplan/migrate/detail/loc.hpp"
 
 #include <fmt/format.h>
 #include <utility>
@@ -409,14 +410,7 @@ void SchemaMap::compile_attr(AttrId a, std::vector<MapProblem>& out) {
 
 namespace {
 
-// Where a part of one query lands in another, up to a suffix of source homs not in its shape (and
-// an attribute when the target path ends in one).
-struct Loc {
-    ObId ob;
-    Part part = kNoPart;
-    std::vector<HomId> suffix;
-    std::optional<AttrId> attr;
-};
+using detail::Loc;
 
 // A Loc moved along its suffix as far as the query's shape has the homs.
 Loc canonical(const schema::Schema& s, const Query& q, Loc loc) {
@@ -462,24 +456,25 @@ bool same_side(const schema::Schema& s, const Side& a, const Side& b) {
 
 } // namespace
 
+Loc detail::step_back(const SchemaMap& m, HomId f, Loc loc) {
+    const HomImage& im = m.hom_image(f);
+    const Query& qc = m.query(m.target()->hom(f).dom);
+    if (im.path) {
+        Loc r = loc;
+        r.ob = qc.nodes()[0].ob;
+        r.part = qc.locate_node(0).part;
+        r.suffix = *im.path;
+        r.suffix.insert(r.suffix.end(), loc.suffix.begin(), loc.suffix.end());
+        return r;
+    }
+    loc.part = (*im.morphism)(loc.ob, loc.part);
+    return loc;
+}
+
 void SchemaMap::check_equations(std::vector<MapProblem>& out) {
     const schema::Schema& t = *target_;
     const schema::Schema& s = *source_;
     // The image in Q_dom of a Loc of Q_codom, along target hom f : dom -> codom.
-    auto step = [&](HomId f, Loc loc) -> Loc {
-        const HomImage& im = homs_[f.index()].image;
-        const Query& qc = *obs_[t.hom(f).dom.index()].query;
-        if (im.path) {
-            Loc r = loc;
-            r.ob = qc.nodes()[0].ob;
-            r.part = qc.locate_node(0).part;
-            r.suffix = *im.path;
-            r.suffix.insert(r.suffix.end(), loc.suffix.begin(), loc.suffix.end());
-            return r;
-        }
-        loc.part = (*im.morphism)(loc.ob, loc.part);
-        return loc;
-    };
     auto side = [&](const schema::Path& p) {
         Side out_side;
         for (HomId h : p.homs) {
@@ -520,7 +515,7 @@ void SchemaMap::check_equations(std::vector<MapProblem>& out) {
                 return out_side;
             }
             for (Loc& l : locs) {
-                l = step(*it, l);
+                l = detail::step_back(*this, *it, l);
             }
         }
         const Query& qc = *obs_[p.dom.index()].query;

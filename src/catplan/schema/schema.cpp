@@ -24,6 +24,20 @@ std::string_view to_string(ValueKind kind) {
     return "Unknown";
 }
 
+const char* kind_noun(GeneratorKind k) {
+    switch (k) {
+    case GeneratorKind::Ob:
+        return "an object";
+    case GeneratorKind::Hom:
+        return "a hom";
+    case GeneratorKind::AttrType:
+        return "an attribute type";
+    case GeneratorKind::Attr:
+        return "an attribute";
+    }
+    return "a generator";
+}
+
 std::optional<ValueKind> parse_value_kind(std::string_view name) {
     if (name == "Bool") {
         return ValueKind::Bool;

@@ -81,6 +81,9 @@ struct Equation {
 /// What a name refers to in a schema.
 enum class GeneratorKind { Ob, Hom, AttrType, Attr };
 
+/// The kind as a noun with its article, for messages: "an object", "a hom", ...
+const char* kind_noun(GeneratorKind k);
+
 struct Generator {
     GeneratorKind kind;
     std::uint32_t index;

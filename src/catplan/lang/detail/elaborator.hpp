@@ -88,8 +88,6 @@ struct Elaborator {
 Declaration new_declaration(DeclKind kind, std::string name, SourceRange range, bool imported,
                             schema::SchemaPtr schema);
 
-/// "an object", "a hom", "an attribute type", "an attribute".
-const char* kind_noun(schema::GeneratorKind k);
 /// Whether the expression is an Int, Float, String (or Julia :symbol) or Bool literal.
 bool is_literal(const Expr& e);
 /// The kind of a literal (Unknown for anything else).

@@ -1,0 +1,1 @@
+check examples/colorblocksworld/colorblocksworld.cp --format json

@@ -1,0 +1,1 @@
+homs examples/colorblocksworld/colorblocksworld.cp Goal Initial --monic --format json

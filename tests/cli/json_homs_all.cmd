@@ -1,0 +1,1 @@
+homs tests/cli/data/graphs.cp Path2 Cycle3 --all --format json

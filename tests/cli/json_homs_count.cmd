@@ -1,0 +1,1 @@
+homs examples/colorblocksworld/colorblocksworld.cp Goal Initial --count --format json

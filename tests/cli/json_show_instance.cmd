@@ -1,0 +1,1 @@
+show examples/colorblocksworld/colorblocksworld.cp Initial --format json

@@ -1,0 +1,1 @@
+validate examples/colorblocksworld/colorblocksworld.cp --problem CaseStudy --plan tests/cli/no-such.plan --format json
