@@ -102,7 +102,7 @@ Result<SchemaMap> second_delta(const SchemaMap& first, const SchemaMap& second) 
         for (std::size_t n = 0; n < qd.nodes().size(); ++n) {
             QueryElement el = qd.locate_node(n);
             if (!el.is_value) {
-                Loc loc{el.ob, el.part, {}};
+                Loc loc{el.ob, el.part, {}, std::nullopt};
                 for (auto it = path.rbegin(); it != path.rend(); ++it) {
                     loc = step_back(first, *it, loc);
                 }
@@ -147,7 +147,7 @@ Result<SchemaMap> second_delta(const SchemaMap& first, const SchemaMap& second) 
             break;
         }
         case AttrImage::Kind::Path: {
-            Loc loc{im1.start_ob, im1.start, im1.homs};
+            Loc loc{im1.start_ob, im1.start, im1.homs, std::nullopt};
             for (auto it = path.rbegin(); it != path.rend(); ++it) {
                 loc = step_back(first, *it, loc);
             }
