@@ -160,6 +160,14 @@ const rewrite::Rule* find_rule(const lang::Module& m, const std::string& name) {
     return nullptr;
 }
 
+const lang::Declaration* load_declaration(Session& s, const std::string& file,
+                                          const std::string& name,
+                                          std::optional<lang::DeclKind> kind,
+                                          std::optional<lang::Module>& m, std::ostream& err) {
+    m = load(s, file, err);
+    return m ? find_declaration(*m, file, name, kind, err) : nullptr;
+}
+
 // The problem `problem_name` of FILE, checked against `--domain` when one is given.
 plan::ProblemPtr load_problem(Session& s, const std::string& file, const std::string& domain_name,
                               const std::string& problem_name, std::ostream& err) {

@@ -80,6 +80,13 @@ const lang::Declaration* find_declaration(const lang::Module& m, const std::stri
                                           const std::string& name,
                                           std::optional<lang::DeclKind> kind, std::ostream& err);
 
+/// Loads `file` into `m` and finds its declaration `name` of the wanted kind; nullptr with every
+/// diagnostic printed on err.
+const lang::Declaration* load_declaration(Session& s, const std::string& file,
+                                          const std::string& name,
+                                          std::optional<lang::DeclKind> kind,
+                                          std::optional<lang::Module>& m, std::ostream& err);
+
 /// A rule declared at top level or inside a domain of the module, or nullptr.
 const rewrite::Rule* find_rule(const lang::Module& m, const std::string& name);
 

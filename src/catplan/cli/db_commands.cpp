@@ -93,11 +93,8 @@ int cmd_migrate_db(const MigrateDbArgs& a, const std::string& file, const std::s
         return db_errors({url.error()}, err);
     }
     Session s;
-    auto m = load(s, file, err);
-    if (!m) {
-        return kBadInput;
-    }
-    const auto* d = find_declaration(*m, file, map, lang::DeclKind::Map, err);
+    std::optional<lang::Module> m;
+    const auto* d = load_declaration(s, file, map, lang::DeclKind::Map, m, err);
     if (d == nullptr) {
         return kBadInput;
     }

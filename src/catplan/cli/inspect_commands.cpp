@@ -101,11 +101,8 @@ nlohmann::json show_json(const lang::Declaration& d) {
 int cmd_show(const std::string& file, const std::string& name, bool json, std::ostream& out,
              std::ostream& err) {
     Session s;
-    auto m = load(s, file, err);
-    if (!m) {
-        return kBadInput;
-    }
-    const auto* d = find_declaration(*m, file, name, std::nullopt, err);
+    std::optional<lang::Module> m;
+    const auto* d = load_declaration(s, file, name, std::nullopt, m, err);
     if (d == nullptr) {
         return kBadInput;
     }
