@@ -1,4 +1,5 @@
 #include "catplan/base/diagnostic.hpp"
+#include "catplan/base/parallel.hpp"
 #include "catplan/base/process.hpp"
 #include "catplan/base/result.hpp"
 #include "catplan/base/symbol.hpp"
@@ -6,8 +7,10 @@
 
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <cstring>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <thread>
 #include <vector>
@@ -53,6 +56,50 @@ TEST(Symbol, TextsStayReadableAcrossManyChunksAndThreads) {
         EXPECT_EQ(b[i].str(), "t1_" + std::to_string(i));
         EXPECT_EQ(Symbol::intern("t1_" + std::to_string(i)), b[i]);
     }
+}
+
+TEST(Parallel, EveryIndexRunsOnceOnAWorkerOfItsOwn) {
+    // 1,000 pieces on three workers: each index once, each worker id below three (per_worker is
+    // written without a lock: a worker id is one thread, as the callers' per-worker data needs).
+    std::vector<std::atomic<int>> runs(1000);
+    std::vector<int> per_worker(3, 0);
+    parallel_for(runs.size(), 3, [&](std::size_t w, std::size_t i) {
+        ASSERT_LT(w, 3U);
+        ++runs[i];
+        ++per_worker[w];
+    });
+    for (const auto& r : runs) {
+        EXPECT_EQ(r.load(), 1);
+    }
+    EXPECT_EQ(per_worker[0] + per_worker[1] + per_worker[2], 1000);
+}
+
+TEST(Parallel, MoreJobsThanPiecesUsesOneWorkerPerPiece) {
+    std::atomic<std::size_t> highest{0};
+    parallel_for(2, 8, [&](std::size_t w, std::size_t) {
+        std::size_t h = highest;
+        while (w > h && !highest.compare_exchange_weak(h, w)) {
+        }
+    });
+    EXPECT_LE(highest.load(), 1U);
+    int ran = 0;
+    parallel_for(0, 4, [&](std::size_t, std::size_t) { ++ran; });
+    EXPECT_EQ(ran, 0);
+}
+
+TEST(Parallel, AnExceptionStopsTheWorkAndReachesTheCaller) {
+    std::atomic<int> ran{0};
+    EXPECT_THROW(parallel_for(10000, 2,
+                              [&](std::size_t, std::size_t i) {
+                                  ++ran;
+                                  if (i == 3) {
+                                      throw std::runtime_error("piece 3");
+                                  }
+                              }),
+                 std::runtime_error);
+    // The workers stop taking pieces after the throw (each may finish the one it holds).
+    EXPECT_LT(ran.load(), 10000);
+    EXPECT_GE(default_jobs(), 1U);
 }
 
 TEST(Symbol, InterningGivesEqualHandlesForEqualText) {

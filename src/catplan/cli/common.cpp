@@ -6,6 +6,7 @@
 #include "catplan/cli/pddl_transfer.hpp"
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <fmt/format.h>
 #include <ostream>
 #include <unistd.h>
@@ -15,9 +16,13 @@ namespace catplan::cli {
 // Prints the diagnostics collected since the last call, each once (a command loads in phases, each
 // reporting what it found); returns true when there were errors.
 bool report(Session& s, std::ostream& err) {
+    const auto& all = s.sink.diagnostics();
+    // Only the new ones: a session that reads many plans goes on after one that had errors.
+    bool errors = std::any_of(all.begin() + static_cast<std::ptrdiff_t>(s.reported), all.end(),
+                              [](const Diagnostic& d) { return d.severity == Severity::Error; });
     err << s.sink.render_from(s.reported);
-    s.reported = s.sink.diagnostics().size();
-    return s.sink.has_errors();
+    s.reported = all.size();
+    return errors;
 }
 
 // Loads a file and its imports; nullopt (with every diagnostic printed) when it has errors.
@@ -199,7 +204,7 @@ plan::ProblemPtr find_problem(const lang::Module& m, const std::string& file,
     return p->problem;
 }
 
-void add_transfer_input_options(CLI::App* cmd, TransferArgs& a) {
+void add_transfer_input_options(CLI::App* cmd, TransferArgs& a, std::vector<std::string>* plans) {
     cmd->add_option("FILE", a.file,
                     "language file declaring (or importing) the map, the domain and the problem")
         ->required();
@@ -208,9 +213,17 @@ void add_transfer_input_options(CLI::App* cmd, TransferArgs& a) {
     cmd->add_option("--problem", a.problem,
                     "the source problem (or a PDDL problem file of a domain FILE imports)")
         ->required();
-    cmd->add_option("--plan", a.plan_file,
-                    "the source plan: one step per line (an IPC plan with a PDDL problem)")
-        ->required();
+    const std::string plan_help =
+        "the source plan: one step per line (an IPC plan with a PDDL problem)";
+    if (plans == nullptr) {
+        cmd->add_option("--plan", a.plan_file, plan_help)->required();
+    } else {
+        // One value per --plan, so that a plan cannot swallow the FILE after it.
+        cmd->add_option("--plan", *plans,
+                        plan_help + "; repeat it, or name a directory, to transfer many plans")
+            ->required()
+            ->allow_extra_args(false);
+    }
     cmd->add_option("--goal", a.goal,
                     "an instance of the target schema: the goal intended in the target domain "
                     "(default: the migrated source goal)");
@@ -266,6 +279,15 @@ plan::SearchOptions replan_options(const TransferArgs& a, std::ostream& err) {
 
 std::optional<TransferInputs> load_transfer_inputs(Session& s, const TransferArgs& a,
                                                    std::ostream& err) {
+    auto in = load_transfer_setting(s, a, err);
+    if (!in || !load_transfer_plan(s, *in, a.plan_file, err)) {
+        return std::nullopt;
+    }
+    return in;
+}
+
+std::optional<TransferInputs> load_transfer_setting(Session& s, const TransferArgs& a,
+                                                    std::ostream& err) {
     auto m = load(s, a.file, err);
     if (!m) {
         return std::nullopt;
@@ -295,12 +317,20 @@ std::optional<TransferInputs> load_transfer_inputs(Session& s, const TransferArg
             return std::nullopt;
         }
     }
-    auto plan = load_plan(s, a.plan_file, *in.problem, err);
+    return in;
+}
+
+bool load_transfer_plan(Session& s, TransferInputs& in, const std::string& path,
+                        std::ostream& err) {
+    if (in.pddl) {
+        return load_ipc_plan(s, in, path, err);
+    }
+    auto plan = load_plan(s, path, *in.problem, err);
     if (!plan) {
-        return std::nullopt;
+        return false;
     }
     in.plan = std::move(*plan);
-    return in;
+    return true;
 }
 
 transfer::TransferOptions transfer_options(const TransferArgs& a, const TransferInputs& in) {

@@ -36,7 +36,7 @@ struct Session {
 };
 
 /// Prints the diagnostics collected since the last call (each once); returns true when there
-/// were errors.
+/// were errors among them.
 bool report(Session& s, std::ostream& err);
 
 /// Loads a file and its imports; nullopt (with every diagnostic printed) when it has errors.
@@ -129,8 +129,10 @@ struct TransferArgs {
     bool strict = false, follow_source = false;
 };
 
-/// Adds FILE, --map, --domain, --problem, --plan, --goal and --rename-by-type to cmd.
-void add_transfer_input_options(CLI::App* cmd, TransferArgs& a);
+/// Adds FILE, --map, --domain, --problem, --plan, --goal and --rename-by-type to cmd; with
+/// `plans`, --plan may be repeated and its values go there instead of to a.plan_file.
+void add_transfer_input_options(CLI::App* cmd, TransferArgs& a,
+                                std::vector<std::string>* plans = nullptr);
 
 /// Adds --strict and --follow-source (how a trajectory that leaves the migrated source states is
 /// judged) to cmd.
@@ -160,6 +162,15 @@ struct TransferInputs {
 /// Loads the inputs a's names; nullopt with every error printed.
 std::optional<TransferInputs> load_transfer_inputs(Session& s, const TransferArgs& a,
                                                    std::ostream& err);
+
+/// Loads what every plan of a transfer shares (the map, the problem, the goals; no plan);
+/// nullopt with every error printed.
+std::optional<TransferInputs> load_transfer_setting(Session& s, const TransferArgs& a,
+                                                    std::ostream& err);
+
+/// Loads the plan at `path` into in (a step list, or an IPC plan with PDDL inputs); false with
+/// every error printed.
+bool load_transfer_plan(Session& s, TransferInputs& in, const std::string& path, std::ostream& err);
 
 /// The transfer a asks for: renaming, the intended goal, --strict and --follow-source.
 transfer::TransferOptions transfer_options(const TransferArgs& a, const TransferInputs& in);

@@ -144,17 +144,6 @@ std::optional<TransferInputs> load_pddl_transfer_inputs(Session& s, const lang::
     PddlTransfer pt;
     pt.source = std::make_shared<const pddl::Import>(std::move(*with_problem));
     in.problem = pt.source->problem;
-    auto f = s.sources.add_file(a.plan_file);
-    if (!f) {
-        error(err, fmt::format("cannot read '{}'", a.plan_file));
-        return std::nullopt;
-    }
-    auto plan = pddl::parse_ipc_plan(*f, s.sources, s.sink);
-    if (report(s, err) || !plan) {
-        return std::nullopt;
-    }
-    pt.plan = std::move(*plan);
-    in.plan = pddl::rule_plan(*pt.source, pt.plan);
     if (!add_target(s, m, in, a, pt, err)) {
         return std::nullopt;
     }
@@ -178,6 +167,24 @@ std::optional<TransferInputs> load_pddl_transfer_inputs(Session& s, const lang::
     }
     in.pddl = std::make_shared<const PddlTransfer>(std::move(pt));
     return in;
+}
+
+bool load_ipc_plan(Session& s, TransferInputs& in, const std::string& path, std::ostream& err) {
+    auto f = s.sources.add_file(path);
+    if (!f) {
+        error(err, fmt::format("cannot read '{}'", path));
+        return false;
+    }
+    auto plan = pddl::parse_ipc_plan(*f, s.sources, s.sink);
+    if (report(s, err) || !plan) {
+        return false;
+    }
+    // The PDDL side is shared by every plan of a batch: this plan gets a copy of its own.
+    auto pt = std::make_shared<PddlTransfer>(*in.pddl);
+    pt->plan = std::move(*plan);
+    in.plan = pddl::rule_plan(*pt->source, pt->plan);
+    in.pddl = std::move(pt);
+    return true;
 }
 
 std::string pddl_steps_text(const TransferInputs& in, const transfer::TransferResult& t) {
@@ -219,11 +226,10 @@ std::string pddl_steps_text(const TransferInputs& in, const transfer::TransferRe
 }
 
 int finish_pddl_transfer(const TransferInputs& in, const TransferArgs& a,
-                         const transfer::TransferResult& t, const std::string& plan_output,
+                         const transfer::TransferResult& t, std::string& plan_text,
                          std::string& text, std::vector<OutputText>& outputs) {
     const auto& pt = *in.pddl;
     plan::Plan target{transfer::target_plan(t.steps)};
-    std::string plan_text;
     int rc = kOk;
     if (pt.target != nullptr && t.target_initial && t.target_goal) {
         auto ipc = pddl::to_ipc_plan(*pt.target, target);
@@ -253,9 +259,6 @@ int finish_pddl_transfer(const TransferInputs& in, const TransferArgs& a,
         }
     } else {
         plan_text = target.to_string();
-    }
-    if (!plan_output.empty()) {
-        outputs.push_back({plan_text, plan_output});
     }
     return rc;
 }

@@ -37,21 +37,26 @@ struct PddlTransfer {
 /// Whether a --problem argument names a PDDL file.
 bool is_pddl_problem(const std::string& problem);
 
-/// Loads a transfer's inputs when --problem is a PDDL file; nullopt with every error printed.
+/// Loads a transfer's inputs but the plan when --problem is a PDDL file; nullopt with every error
+/// printed.
 std::optional<TransferInputs> load_pddl_transfer_inputs(Session& s, const lang::Module& m,
                                                         TransferInputs in, const TransferArgs& a,
                                                         std::ostream& err);
+
+/// Loads the IPC plan at `path` into in (whose PDDL side load_pddl_transfer_inputs loaded); false
+/// with every error printed.
+bool load_ipc_plan(Session& s, TransferInputs& in, const std::string& path, std::ostream& err);
 
 /// The transferred steps in IPC form, each with the source step it comes from and whether it
 /// corresponds or was repaired.
 std::string pddl_steps_text(const TransferInputs& in, const transfer::TransferResult& t);
 
-/// After a transfer with PDDL inputs: the target plan checked by catplan's PDDL validator and
-/// --target-problem compared (what it found appended to `text`), and the files to write added to
-/// `outputs` (-o: the target IPC plan, --problem-output: the target problem), for the caller to
-/// write all or none of; returns kOk, or kNo when the check or the comparison fails.
+/// After a transfer with PDDL inputs: the target plan in IPC form put in `plan_text`, checked by
+/// catplan's PDDL validator, and --target-problem compared (what it found appended to `text`),
+/// and --problem-output's file added to `outputs`, for the caller to write all or none of;
+/// returns kOk, or kNo when the check or the comparison fails.
 int finish_pddl_transfer(const TransferInputs& in, const TransferArgs& a,
-                         const transfer::TransferResult& t, const std::string& plan_output,
+                         const transfer::TransferResult& t, std::string& plan_text,
                          std::string& text, std::vector<OutputText>& outputs);
 
 } // namespace catplan::cli

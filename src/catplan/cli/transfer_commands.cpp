@@ -2,6 +2,8 @@
 // text or JSON with its verdict.
 
 #include "catplan/acset/printer.hpp"
+#include "catplan/base/assert.hpp"
+#include "catplan/base/parallel.hpp"
 #include "catplan/cli/commands.hpp"
 #include "catplan/cli/common.hpp"
 #include "catplan/cli/options.hpp"
@@ -13,18 +15,27 @@
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
+#include <array>
+#include <filesystem>
 #include <fmt/format.h>
+#include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <ostream>
+#include <sstream>
+#include <string_view>
 
 namespace catplan::cli {
 namespace {
 
 struct TransferCommandArgs {
     TransferArgs in;
+    /// --plan: one plan, or many (files and directories) for a batch.
+    std::vector<std::string> plans;
     std::string format = "text", output;
     bool trace = false, no_timing = false;
+    /// --jobs: worker threads of a batch (0: one per core).
+    std::size_t jobs = 0;
 };
 
 // Whether the claim of Appendix A holds, or the hypothesis it lacks: one line of the report.
@@ -248,38 +259,255 @@ nlohmann::json json_report(const TransferCommandArgs& a, const TransferInputs& i
     return j;
 }
 
-int cmd_transfer(const TransferCommandArgs& a, std::ostream& out, std::ostream& err) {
-    Session s;
-    auto in = load_transfer_inputs(s, a.in, err);
-    if (!in) {
-        return kBadInput;
-    }
-    auto options = transfer_options(a.in, *in);
+Outcome run_transfer(const TransferCommandArgs& a, const TransferInputs& in, std::ostream& err) {
+    auto options = transfer_options(a.in, in);
     options.keep_states = a.trace;
     Outcome r;
-    r.t = transfer::transfer_plan(*in->map, *in->problem, in->plan, options);
+    r.t = transfer::transfer_plan(*in.map, *in.problem, in.plan, options);
     r.transfer_peak_kib = catplan::peak_rss_kib();
     if (a.in.replan) {
         r.replan = transfer::replan(r.t, replan_options(a.in, err));
     }
+    return r;
+}
+
+// The exit code of one transferred plan: 0 valid (and, with PDDL inputs, checked), else 1.
+int plan_exit_code(const Outcome& r, int checked) {
+    return r.t.verdict.valid() && checked == kOk ? kOk : kNo;
+}
+
+int cmd_transfer(const TransferCommandArgs& a, std::ostream& out, std::ostream& err) {
+    Session s;
+    auto in = load_transfer_setting(s, a.in, err);
+    if (!in || !load_transfer_plan(s, *in, a.plans.front(), err)) {
+        return kBadInput;
+    }
+    Outcome r = run_transfer(a, *in, err);
     std::string text =
         a.format == "json" ? json::dump(json_report(a, *in, r), 2) + "\n" : text_report(a, *in, r);
     int checked = kOk;
     std::vector<OutputText> outputs;
     if (in->pddl) {
         // With PDDL inputs, -o is the target IPC plan and the report goes to stdout.
-        std::string checks;
-        checked = finish_pddl_transfer(*in, a.in, r.t, a.output, checks, outputs);
+        std::string checks, plan_text;
+        checked = finish_pddl_transfer(*in, a.in, r.t, plan_text, checks, outputs);
         text += a.format == "json" ? "" : checks;
         outputs.insert(outputs.begin(), OutputText{text, ""});
+        if (!a.output.empty()) {
+            outputs.push_back({plan_text, a.output});
+        }
     } else {
         outputs.push_back({text, a.output});
     }
     int rc = emit(outputs, out, err);
-    if (rc != kOk) {
-        return rc;
+    return rc != kOk ? rc : plan_exit_code(r, checked);
+}
+
+// Many plans at once: every plan transferred on the same map and problem, one report line (or JSON
+// object) per plan in the order given, the worst exit code at the end.
+
+// The plan files --plan names, in order: a file as given, a directory's files by name (hidden
+// files left out); nullopt with every error printed.
+std::optional<std::vector<std::string>> expand_plans(const std::vector<std::string>& given,
+                                                     std::ostream& err) {
+    namespace fs = std::filesystem;
+    std::vector<std::string> plans;
+    bool ok = true;
+    for (const auto& g : given) {
+        std::error_code ec;
+        if (!fs::is_directory(g, ec)) {
+            plans.push_back(g); // reading it says what is wrong with it
+            continue;
+        }
+        std::vector<std::string> files;
+        for (auto it = fs::directory_iterator(g, ec); !ec && it != fs::directory_iterator();
+             it.increment(ec)) {
+            std::error_code kind;
+            std::string name = it->path().filename().string();
+            if (it->is_regular_file(kind) && !name.empty() && name.front() != '.') {
+                files.push_back(it->path().string());
+            }
+        }
+        if (ec || files.empty()) {
+            error(err, ec ? fmt::format("cannot read the directory '{}': {}", g, ec.message())
+                          : fmt::format("the directory '{}' holds no plan file", g));
+            ok = false;
+        }
+        std::sort(files.begin(), files.end());
+        plans.insert(plans.end(), files.begin(), files.end());
     }
-    return r.t.verdict.valid() && checked == kOk ? kOk : kNo;
+    return ok ? std::optional(std::move(plans)) : std::nullopt;
+}
+
+bool is_batch(const TransferCommandArgs& a) {
+    std::error_code ec;
+    return a.plans.size() > 1 || a.format == "jsonl" ||
+           std::filesystem::is_directory(a.plans.front(), ec);
+}
+
+// What one plan of a batch gave.
+struct PlanResult {
+    int rc = kOk;
+    nlohmann::json json;     // its report (json and jsonl)
+    std::string line;        // its report line (text)
+    std::string target_plan; // with PDDL inputs: the target IPC plan
+    std::string diagnostics; // what loading it printed
+};
+
+std::string summary_line(const std::string& path, const TransferInputs& in, const Outcome& r) {
+    const auto& v = r.t.verdict;
+    std::string o =
+        fmt::format("{}: {}; {} -> {}; goal satisfaction {}\n", path, v.summary(),
+                    step_count(in.plan.steps.size()),
+                    step_count(transfer::target_plan(r.t.steps).size()), percent(v.goal));
+    if (r.replan) {
+        o += fmt::format("  replanning: {}{}\n", plan::to_string(r.replan->search.status),
+                         r.replan->search.plan ? ", " + step_count(r.replan->steps.size()) : "");
+    }
+    return o;
+}
+
+PlanResult transfer_one(const TransferCommandArgs& a, Session& s, TransferInputs in,
+                        const std::string& path) {
+    PlanResult p;
+    std::ostringstream diag;
+    if (!load_transfer_plan(s, in, path, diag)) {
+        p.rc = kBadInput;
+        p.diagnostics = diag.str();
+        p.json = {{"plan_file", path}, {"exit_code", p.rc}, {"errors", p.diagnostics}};
+        p.line = fmt::format("{}: not read (exit 2): the errors are on stderr\n", path);
+        return p;
+    }
+    Outcome r = run_transfer(a, in, diag);
+    int checked = kOk;
+    std::string checks;
+    if (in.pddl) {
+        std::vector<OutputText> none; // a batch takes no --problem-output
+        checked = finish_pddl_transfer(in, a.in, r.t, p.target_plan, checks, none);
+    }
+    p.rc = plan_exit_code(r, checked);
+    p.diagnostics = diag.str();
+    if (a.format == "text") {
+        p.line = summary_line(path, in, r);
+        for (std::string_view rest = checks; !rest.empty();) {
+            auto end = rest.find('\n');
+            p.line += fmt::format("  {}\n", rest.substr(0, end));
+            rest.remove_prefix(end == std::string_view::npos ? rest.size() : end + 1);
+        }
+    } else {
+        p.json = json_report(a, in, r);
+        p.json["plan_file"] = path;
+        p.json["exit_code"] = p.rc;
+        if (in.pddl) {
+            p.json["target_ipc_plan"] = p.target_plan;
+        }
+    }
+    return p;
+}
+
+// One loaded copy of the shared inputs per worker thread (parallel.hpp says why).
+struct Worker {
+    Session s;
+    std::optional<TransferInputs> in;
+};
+
+// With PDDL inputs, -o names a directory that receives each target plan under its source plan's
+// file name; two plans of one name would overwrite each other.
+std::optional<std::vector<OutputText>> plan_outputs(const TransferCommandArgs& a,
+                                                    const std::vector<std::string>& plans,
+                                                    const std::vector<PlanResult>& results,
+                                                    std::ostream& err) {
+    namespace fs = std::filesystem;
+    std::vector<OutputText> outputs;
+    std::map<std::string, std::string> taken;
+    for (std::size_t i = 0; i < plans.size(); ++i) {
+        std::string name = fs::path(plans[i]).filename().string();
+        if (auto [it, fresh] = taken.emplace(name, plans[i]); !fresh) {
+            error(err, fmt::format("plans '{}' and '{}' have one file name: their target plans "
+                                   "would overwrite each other in '{}'",
+                                   it->second, plans[i], a.output));
+            return std::nullopt;
+        }
+        if (results[i].rc != kBadInput) {
+            outputs.push_back({results[i].target_plan, (fs::path(a.output) / name).string()});
+        }
+    }
+    std::error_code ec;
+    fs::create_directories(a.output, ec);
+    if (ec) {
+        error(err, fmt::format("cannot make the directory '{}': {}", a.output, ec.message()));
+        return std::nullopt;
+    }
+    return outputs;
+}
+
+std::string batch_report(const TransferCommandArgs& a, const std::vector<PlanResult>& results) {
+    std::string o;
+    if (a.format == "json") {
+        nlohmann::json all = nlohmann::json::array();
+        for (const auto& p : results) {
+            all.push_back(p.json);
+        }
+        return json::dump(all, 2) + "\n";
+    }
+    std::array<std::size_t, 3> count{}; // by exit code 0, 1, 2
+    for (const auto& p : results) {
+        o += a.format == "jsonl" ? json::dump(p.json) + "\n" : p.line;
+        ++count[static_cast<std::size_t>(std::min<int>(p.rc, kBadInput))];
+    }
+    if (a.format == "text") {
+        o += fmt::format("{} plans: {} valid, {} invalid, {} not read\n", results.size(),
+                         count[kOk], count[kNo], count[kBadInput]);
+    }
+    return o;
+}
+
+int cmd_transfer_batch(const TransferCommandArgs& a, std::ostream& out, std::ostream& err) {
+    if (a.trace || !a.in.problem_output.empty()) {
+        error(err, fmt::format("{} takes one --plan", a.trace ? "--trace" : "--problem-output"));
+        return kBadInput;
+    }
+    auto plans = expand_plans(a.plans, err);
+    if (!plans) {
+        return kBadInput;
+    }
+    std::size_t jobs = std::min(a.jobs != 0 ? a.jobs : default_jobs(), plans->size());
+    std::vector<std::unique_ptr<Worker>> workers;
+    for (std::size_t w = 0; w < jobs; ++w) {
+        workers.push_back(std::make_unique<Worker>());
+    }
+    // The shared inputs' errors are printed once; the other workers load the same files again.
+    workers[0]->in = load_transfer_setting(workers[0]->s, a.in, err);
+    if (!workers[0]->in) {
+        return kBadInput;
+    }
+    std::vector<PlanResult> results(plans->size());
+    parallel_for(plans->size(), jobs, [&](std::size_t k, std::size_t i) {
+        Worker& w = *workers[k];
+        if (!w.in) {
+            std::ostringstream again;
+            w.in = load_transfer_setting(w.s, a.in, again);
+            CATPLAN_ASSERT(w.in.has_value(), "inputs that loaded once load again");
+        }
+        results[i] = transfer_one(a, w.s, *w.in, (*plans)[i]);
+    });
+    int worst = kOk;
+    for (const auto& p : results) {
+        err << p.diagnostics;
+        worst = std::max(worst, p.rc);
+    }
+    std::vector<OutputText> outputs{{batch_report(a, results), ""}};
+    if (workers[0]->in->pddl && !a.output.empty()) {
+        auto files = plan_outputs(a, *plans, results, err);
+        if (!files) {
+            return kBadInput;
+        }
+        outputs.insert(outputs.end(), files->begin(), files->end());
+    } else {
+        outputs.front().path = a.output;
+    }
+    int rc = emit(outputs, out, err);
+    return rc != kOk ? rc : worst;
 }
 
 } // namespace
@@ -289,16 +517,21 @@ void add_transfer_commands(CLI::App& app, CommandTable& table) {
     auto* cmd = app.add_subcommand(
         "transfer", "Transfer a plan along an ontology map and validate it in the target domain "
                     "(exit 1 when the transferred plan is invalid)");
-    add_transfer_input_options(cmd, a->in);
+    add_transfer_input_options(cmd, a->in, &a->plans);
     cmd->add_flag("--trace", a->trace, "print every target state as tables");
     add_trajectory_options(cmd, a->in);
-    cmd->add_option("--format", a->format, "text or json")
-        ->check(CLI::IsMember({"text", "json"}))
+    cmd->add_option("--format", a->format,
+                    "text, json, or jsonl (JSON Lines: one object per plan, for many plans)")
+        ->check(CLI::IsMember({"text", "json", "jsonl"}))
         ->capture_default_str();
+    cmd->add_option("--jobs", a->jobs, "with many plans: worker threads (default: one per core)")
+        ->check(CLI::PositiveNumber);
     add_replan_options(cmd, a->in,
                        "also plan from scratch in the target domain and compare (paper Metric 5)");
     cmd->add_option("-o,--output", a->output,
-                    "write the report to this file (with a PDDL problem: the target IPC plan)");
+                    "write the report to this file (with a PDDL problem: the target IPC plan; "
+                    "with many plans and a PDDL problem: a directory for the target plans, each "
+                    "named as its source plan)");
     cmd->add_option("--problem-output", a->in.problem_output,
                     "with a PDDL problem: write the target problem (Δ_F of its initial state and "
                     "goal) as PDDL to this file");
@@ -306,7 +539,9 @@ void add_transfer_commands(CLI::App& app, CommandTable& table) {
                     "with a PDDL problem: the target's own PDDL problem, whose initial state must "
                     "be Δ_F of the source's and whose goal is the intended goal");
     cmd->add_flag("--no-timing", a->no_timing, "leave out times and memory (reproducible output)");
-    table.add(cmd, [a](std::ostream& o, std::ostream& e) { return cmd_transfer(*a, o, e); });
+    table.add(cmd, [a](std::ostream& o, std::ostream& e) {
+        return is_batch(*a) ? cmd_transfer_batch(*a, o, e) : cmd_transfer(*a, o, e);
+    });
 }
 
 } // namespace catplan::cli

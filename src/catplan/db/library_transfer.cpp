@@ -2,18 +2,17 @@
 // written in one transaction each.
 
 #include "catplan/base/diagnostic.hpp"
+#include "catplan/base/parallel.hpp"
 #include "catplan/db/detail/library_tables.hpp"
 #include "catplan/db/library.hpp"
 #include "catplan/json/json.hpp"
 #include "catplan/lang/module.hpp"
 #include "catplan/transfer/transfer.hpp"
 
-#include <atomic>
 #include <chrono>
 #include <fmt/format.h>
 #include <map>
 #include <nlohmann/json.hpp>
-#include <thread>
 
 namespace catplan::db {
 
@@ -216,8 +215,7 @@ transfer_library(Connection& c, const std::string& map_file, const std::string& 
                  const LibraryTransferOptions& options,
                  const std::function<void(const StoredTransfer&)>& each) {
     auto start = std::chrono::steady_clock::now();
-    std::size_t jobs =
-        options.jobs != 0 ? options.jobs : std::max(1U, std::thread::hardware_concurrency());
+    std::size_t jobs = options.jobs != 0 ? options.jobs : default_jobs();
     std::vector<std::unique_ptr<Worker>> workers;
     for (std::size_t i = 0; i < jobs; ++i) {
         auto w = load_worker(map_file, map_name);
@@ -254,18 +252,9 @@ transfer_library(Connection& c, const std::string& map_file, const std::string& 
             break;
         }
         std::vector<StoredTransfer> results(batch->size());
-        std::atomic<std::size_t> next{0};
-        std::vector<std::thread> threads;
-        for (std::size_t k = 0; k < workers.size() && k < batch->size(); ++k) {
-            threads.emplace_back([&, k] {
-                for (std::size_t i = next++; i < batch->size(); i = next++) {
-                    results[i] = run(*workers[k], (*batch)[i], map_name);
-                }
-            });
-        }
-        for (auto& t : threads) {
-            t.join();
-        }
+        parallel_for(batch->size(), workers.size(), [&](std::size_t k, std::size_t i) {
+            results[i] = run(*workers[k], (*batch)[i], map_name);
+        });
         if (auto st = store(c, results); !st) {
             return fail(st.error());
         }

@@ -1,0 +1,1 @@
+transfer examples/colorblocks_to_kitchen/appendix_map.cp --map ColorToKitchen --problem CaseStudy --plan tests/cli/transfer/batch --format jsonl --jobs 1 --no-timing

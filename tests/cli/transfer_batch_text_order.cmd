@@ -1,0 +1,1 @@
+transfer examples/colorblocks_to_kitchen/appendix_map.cp --map ColorToKitchen --problem CaseStudy --plan tests/cli/transfer/batch/3-unknown.plan --plan tests/cli/transfer/batch/1-paper.plan --plan tests/cli/transfer/batch/2-short.plan --jobs 1 --no-timing
