@@ -6,6 +6,7 @@
 #include "catplan/base/parallel.hpp"
 #include "catplan/cli/commands.hpp"
 #include "catplan/cli/common.hpp"
+#include "catplan/cli/json_output.hpp"
 #include "catplan/cli/options.hpp"
 #include "catplan/cli/pddl_transfer.hpp"
 #include "catplan/json/json.hpp"
@@ -94,6 +95,59 @@ std::vector<std::string> plan_strings(const std::vector<plan::Step>& steps) {
 
 std::vector<plan::Step> target_steps(const transfer::TransferResult& t) {
     return transfer::target_plan(t.steps);
+}
+
+const char* kind_name(transfer::StepTransfer::Kind k) {
+    switch (k) {
+    case transfer::StepTransfer::Kind::Generated:
+        return "generated";
+    case transfer::StepTransfer::Kind::Corresponds:
+        return "corresponds";
+    case transfer::StepTransfer::Kind::Repaired:
+        return "repaired";
+    }
+    return "generated";
+}
+
+// A match as morphism_json when the rule and the state it went into are known (the states are
+// kept for JSON), else null.
+nlohmann::json match_json(const hom::ACSetMorphism& m, const rewrite::Rule* rule,
+                          const std::vector<acset::ACSet>& states, std::size_t i) {
+    if (rule == nullptr || i >= states.size() ||
+        m.components.size() != rule->L.schema().num_obs()) {
+        return nullptr;
+    }
+    return morphism_json(m, rule->L, states[i]);
+}
+
+// Each transferred step as an object: the source step with its match, how it was carried out,
+// and the target steps it became (the first with its match, unless repaired).
+nlohmann::json steps_json(const TransferInputs& in, const transfer::TransferResult& t) {
+    nlohmann::json out = nlohmann::json::array();
+    for (std::size_t i = 0; i < t.steps.size(); ++i) {
+        const auto& st = t.steps[i];
+        const auto* source_rule = in.problem->domain->find_rule(st.source.action);
+        const rewrite::Rule* target_rule = nullptr;
+        if (st.kind == transfer::StepTransfer::Kind::Generated) {
+            target_rule = t.target_domain.domain->find_rule(st.target.action);
+        } else if (st.kind == transfer::StepTransfer::Kind::Corresponds) {
+            target_rule = in.pddl->actions->domain->find_rule(st.target.action);
+        }
+        nlohmann::json targets = nlohmann::json::array();
+        for (const auto& ts : st.target_steps) {
+            targets.push_back(step_json(
+                ts.action, ts.args,
+                targets.empty() ? match_json(st.target_match, target_rule, t.target_states, i)
+                                : nullptr));
+        }
+        out.push_back(
+            {{"source", step_json(st.source.action, st.source.args,
+                                  match_json(st.source_match, source_rule, t.source_states, i))},
+             {"carried_out_by", kind_name(st.kind)},
+             {"target", targets},
+             {"lost_parameters", st.lost_parameters}});
+    }
+    return out;
 }
 
 // What the command measured around the library calls.
@@ -201,6 +255,7 @@ nlohmann::json json_report(const TransferCommandArgs& a, const TransferInputs& i
     j["source_plan"] = plan_strings(in.plan.steps);
     j["source_valid"] = v.source_valid();
     j["target_plan"] = plan_strings(target_steps(t));
+    j["steps"] = steps_json(in, t);
     j["valid"] = v.valid();
     j["failed_step"] = nullptr;
     if (const auto* failed = v.failed_step()) {
@@ -261,7 +316,8 @@ nlohmann::json json_report(const TransferCommandArgs& a, const TransferInputs& i
 
 Outcome run_transfer(const TransferCommandArgs& a, const TransferInputs& in, std::ostream& err) {
     auto options = transfer_options(a.in, in);
-    options.keep_states = a.trace;
+    // JSON gives each match with the state it went into.
+    options.keep_states = a.trace || a.format != "text";
     Outcome r;
     r.t = transfer::transfer_plan(*in.map, *in.problem, in.plan, options);
     r.transfer_peak_kib = catplan::peak_rss_kib();
