@@ -1,4 +1,5 @@
 #include "catplan/transfer/goal.hpp"
+#include "catplan/transfer/terms.hpp"
 
 #include <gtest/gtest.h>
 
@@ -48,6 +49,33 @@ ACSet tower(const Towers& t, const std::vector<std::pair<std::string, std::strin
         x.set_subpart(t.on_r, o, below);
     }
     return x;
+}
+
+TEST(Terms, AFactNoPersonNamedIsCalledByItsTuple) {
+    // On has homs, no attribute, and nothing points at it: a part of it is its tuple. Named by a
+    // person it keeps its statements; unnamed (or named as PDDL facts are in rules) it is on(a, b).
+    Towers t = towers();
+    ACSet x = tower(t, {{"a", "red"}, {"b", "green"}}, {{0, 1}});
+    Part unnamed = x.add_part(t.on);
+    x.set_subpart(t.on_l, unnamed, 1);
+    x.set_subpart(t.on_r, unnamed, 0);
+    Part fact = x.add_part(t.on, "(on x y)");
+    x.set_subpart(t.on_l, fact, 0);
+    x.set_subpart(t.on_r, fact, 0);
+    EXPECT_EQ(part_statements(x, t.on, 0),
+              (std::vector<std::string>{"On o1", "on_l(o1) == a", "on_r(o1) == b"}));
+    EXPECT_EQ(part_statements(x, t.on, unnamed), (std::vector<std::string>{"On(b, a)"}));
+    EXPECT_EQ(part_statements(x, t.on, fact), (std::vector<std::string>{"On(a, a)"}));
+    EXPECT_EQ(part_word(x, t.on, unnamed), "On(b, a)");
+    EXPECT_FALSE(is_user_name("(on x y)"));
+    EXPECT_FALSE(is_user_name("clear@2"));
+    // A Block has a hom pointing at it and an attribute: no tuple.
+    EXPECT_FALSE(tuple_term(x, t.block, 0).has_value());
+    // A tuple with a hom unset is not a whole fact.
+    Part half = x.add_part(t.on);
+    x.set_subpart(t.on_l, half, 0);
+    EXPECT_FALSE(tuple_term(x, t.on, half).has_value());
+    EXPECT_EQ(part_statements(x, t.on, half).front(), "On #4");
 }
 
 TEST(GoalSatisfaction, StatementsInWords) {

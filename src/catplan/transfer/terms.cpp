@@ -4,12 +4,31 @@
 
 #include <algorithm>
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <tuple>
 
 namespace catplan::transfer {
 
 bool is_user_name(std::string_view name) {
-    return !name.empty() && name.find_first_of("#@") == std::string_view::npos;
+    return !name.empty() && name.find_first_of("#@(") == std::string_view::npos;
+}
+
+std::optional<std::string> tuple_term(const acset::ACSet& x, ObId ob, Part p) {
+    const auto& s = x.schema();
+    const auto& homs = s.homs_from(ob);
+    if (homs.empty() || !s.homs_into(ob).empty() || !s.attrs_from(ob).empty()) {
+        return std::nullopt;
+    }
+    std::vector<std::string> args;
+    for (HomId f : homs) {
+        Part q = x.subpart(f, p);
+        if (q == kNoPart) {
+            return std::nullopt;
+        }
+        // Nothing points at ob, so no part of the tuple is a tuple itself: this recursion stops.
+        args.push_back(part_word(x, s.hom(f).codom, q));
+    }
+    return fmt::format("{}({})", s.ob(ob).name, fmt::join(args, ", "));
 }
 
 std::vector<std::string> part_words(const acset::ACSet& x, ObId ob, Part p) {
@@ -33,6 +52,9 @@ std::vector<std::string> part_words(const acset::ACSet& x, ObId ob, Part p) {
     std::sort(from.begin(), from.end());
     for (auto [d, q, f] : from) {
         words.push_back(fmt::format("{}({})", s.hom(HomId(f)).name, x.part_name(ObId(d), q)));
+    }
+    if (auto t = tuple_term(x, ob, p)) {
+        words.push_back(std::move(*t));
     }
     words.push_back(x.part_label(ob, p));
     return words;
@@ -82,6 +104,11 @@ std::string attr_statement(const acset::ACSet& x, AttrId a, Part p) {
 
 std::vector<std::string> part_statements(const acset::ACSet& x, ObId ob, Part p) {
     const auto& s = x.schema();
+    if (!is_user_name(x.part_name(ob, p))) {
+        if (auto t = tuple_term(x, ob, p)) {
+            return {std::move(*t)}; // clear(a) says all that `clear #1, clear_1(#1) == a` says
+        }
+    }
     std::vector<std::string> out{part_statement(x, ob, p)};
     for (HomId f : s.homs_from(ob)) {
         if (x.subpart(f, p) != kNoPart) {

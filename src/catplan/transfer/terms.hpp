@@ -5,9 +5,10 @@
 // transferred step and the differences of a divergent trajectory all name parts this way.
 //
 // Names that catplan makes up are not a person's: a part's label (`#7`, given to an unnamed part
-// of the initial state so that names can carry every part) and the name of a part a step created
-// that its rule does not name (`block@2`: a Block created by step 2). They contain '#' or '@',
-// which no identifier of the language or of PDDL can.
+// of the initial state so that names can carry every part), the name of a part a step created
+// that its rule does not name (`block@2`: a Block created by step 2), and the name a PDDL action's
+// fact takes in its rule (`(clear y)`). They contain '#', '@' or '(', which no identifier of the
+// language or of PDDL can. A fact no person named is called by its tuple: `clear(a)`.
 
 #include "catplan/acset/acset.hpp"
 #include "catplan/hom/morphism.hpp"
@@ -23,9 +24,15 @@ namespace catplan::transfer {
 /// Whether a part name was written by a person (not empty, and not one catplan makes up).
 bool is_user_name(std::string_view name);
 
+/// A part that is nothing but the tuple of its homs (its object has homs, all set at p, and no
+/// attribute, and no hom points into it: a PDDL fact, a relation's row) called by that tuple,
+/// `on(a, b)`; nullopt for any other part.
+std::optional<std::string> tuple_term(const acset::ACSet& x, ObId ob, Part p);
+
 /// Words for part p of ob in x, best first: its name when a person wrote it; else `f(n)` for
 /// every hom f and part named n by a person with f(that part) == p, ordered by the part's object,
-/// the part, then f; last the part's name or label (so the list is never empty).
+/// the part, then f; then its tuple_term; last the part's name or label (so the list is never
+/// empty).
 std::vector<std::string> part_words(const acset::ACSet& x, ObId ob, Part p);
 
 /// The first of part_words (`_` for kNoPart).
@@ -43,7 +50,7 @@ std::string hom_statement(const acset::ACSet& x, HomId f, Part p);
 std::string attr_statement(const acset::ACSet& x, AttrId a, Part p);
 
 /// Everything x states about part p of ob: the part, then each set hom and each set attribute
-/// in schema order.
+/// in schema order; for a part no person named that has a tuple_term, that term alone.
 std::vector<std::string> part_statements(const acset::ACSet& x, ObId ob, Part p);
 
 /// Where each part of a migrated rule's L starts, by target object (migrate::tuple_origins).

@@ -308,7 +308,7 @@ private:
         auto applied = y_->apply(*a->target, matches[0], [&](ObId c, Part q) {
             const auto& origin = a->r_origins[c.index()];
             if (!origin || q >= origin->parts.size()) {
-                return y_->fresh_name(c, lowercase(f_.target()->ob(c).name));
+                return created_name(c, i);
             }
             Part in_x = r_to_x->components[origin->ob.index()][origin->parts[q]];
             return renamed(renaming_, x_->state().part_name(origin->ob, in_x));
@@ -330,6 +330,12 @@ private:
         st.target_steps = {st.target};
         out_.steps.push_back(std::move(st));
         return true;
+    }
+
+    // The name of a part of ob that target step i creates and no source part names: after its
+    // object and the step (clear@2), a name no person writes (terms.hpp).
+    std::string created_name(ObId ob, std::size_t i) {
+        return y_->fresh_name(ob, fmt::format("{}@{}", lowercase(f_.target()->ob(ob).name), i + 1));
     }
 
     // Applies the source step, naming a created part after its generator in the rule, or after
@@ -391,7 +397,7 @@ private:
             const auto& origin = a.r_origins[ob.index()];
             Part qg = generated_part(c, ob, q);
             if (!origin || qg >= origin->parts.size()) {
-                return y_->fresh_name(ob, lowercase(f_.target()->ob(ob).name));
+                return created_name(ob, i);
             }
             Part in_x = r_to_x.components[origin->ob.index()][origin->parts[qg]];
             return renamed(renaming_, x_->state().part_name(origin->ob, in_x));
@@ -425,9 +431,8 @@ private:
             const auto* rule = own.domain->find_rule(step.action);
             auto mt = plan::resolve_step(*rule, y_->state(), step);
             CATPLAN_ASSERT(mt, "a repair's step applies");
-            auto applied = y_->apply(*rule, *mt, [&](ObId ob, Part) {
-                return y_->fresh_name(ob, lowercase(f_.target()->ob(ob).name));
-            });
+            auto applied =
+                y_->apply(*rule, *mt, [&](ObId ob, Part) { return created_name(ob, i); });
             CATPLAN_ASSERT(applied, "a repair's step applies");
         }
         if (comparing()) {
