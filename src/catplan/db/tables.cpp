@@ -224,6 +224,17 @@ struct Errors {
         }
     }
 
+    /// Each message of `r`, or its error.
+    void add_all(Result<std::vector<std::string>> r) {
+        if (!r) {
+            add(r.error());
+            return;
+        }
+        for (auto& e : *r) {
+            add(std::move(e));
+        }
+    }
+
     std::vector<std::string> done() {
         if (more > 0) {
             list.push_back(fmt::format("... and {} more", more));
@@ -602,14 +613,7 @@ std::vector<std::string> verify_tables(Connection& c, const Layout& l) {
         dangling_keys(c, l, errors);
     }
     if (errors.list.empty()) {
-        auto violations = equation_violations(c, l);
-        if (!violations) {
-            errors.add(violations.error());
-        } else {
-            for (auto& v : *violations) {
-                errors.add(std::move(v));
-            }
-        }
+        errors.add_all(equation_violations(c, l));
     }
     return errors.done();
 }
@@ -660,14 +664,7 @@ ReadState read_state(Connection& c, const SchemaPtr& schema, const std::string& 
     }
     ACSet x(schema);
     assemble(l, raw, var_ids, var_names, x, errors);
-    auto violations = equation_violations(c, l);
-    if (!violations) {
-        errors.add(violations.error());
-    } else {
-        for (auto& v : *violations) {
-            errors.add(std::move(v));
-        }
-    }
+    errors.add_all(equation_violations(c, l));
     out.errors = errors.done();
     if (out.errors.empty()) {
         out.state = std::move(x);
