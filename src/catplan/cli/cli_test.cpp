@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <iostream>
 #include <new>
 #include <sstream>
@@ -97,6 +98,21 @@ TEST(Subcommands, UnknownOrMissingSubcommandIsAUsageErrorWithASuggestion) {
     EXPECT_EQ(r.code, kBadInput);
     EXPECT_EQ(r.err.rfind("catplan: error: ", 0), 0u) << r.err;
     EXPECT_NE(r.err.find("catplan: run 'catplan show --help' for the usage"), std::string::npos);
+}
+
+TEST(PddlImport, WritesAFileThatLoadsWithPddlNamesQuoted) {
+    // blocks4's on-table and hand-empty are no identifiers: the file writes them var"on-table".
+    std::string dir = std::string(CATPLAN_SOURCE_DIR) + "/examples/pddl/blocks/";
+    std::string file = ::testing::TempDir() + "catplan_import_blocks4.cp";
+    auto r = run_args({"pddl", "import", dir + "blocks4.pddl", dir + "p01-4.pddl", "-o", file});
+    ASSERT_EQ(r.code, kOk) << r.err;
+    r = run_args({"check", file});
+    EXPECT_EQ(r.code, kOk) << r.err;
+    EXPECT_NE(r.out.find("instance Initial (blocks4): 11 parts (object 3, block 3, on 2, on-table "
+                         "1, clear 1, hand-empty 1)"),
+              std::string::npos)
+        << r.out;
+    std::remove(file.c_str());
 }
 
 TEST(NumericOptions, EveryLimitOptionIsChecked) {

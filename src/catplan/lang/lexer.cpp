@@ -120,6 +120,10 @@ private:
         }
         if (std::size_t e = ident_end(text_, i_); e > i_) {
             i_ = e;
+            if (text_.substr(b, e - b) == "var" && e < text_.size() && text_[e] == '"') {
+                quoted_identifier(b);
+                return;
+            }
             push(TokenKind::Ident, b, i_, std::string(text_.substr(b, i_ - b)));
             return;
         }
@@ -255,6 +259,24 @@ private:
         }
     }
 
+    // Julia's var"name": an identifier spelled as a string, for a name that is not an identifier
+    // (PDDL's on-table, pick-up), as catplan prints such names.
+    void quoted_identifier(std::size_t b) {
+        std::size_t errors = sink_.num_errors();
+        string();
+        Token& t = tokens_.back();
+        t.kind = TokenKind::Ident;
+        t.range = range(b, i_);
+        if (sink_.num_errors() == errors && t.text.empty()) {
+            sink_.error(t.range, "var\"\" names nothing: a quoted identifier needs a name");
+        } else if (sink_.num_errors() == errors && !is_identifier(t.text) &&
+                   ident_end(t.text, 0) == t.text.size()) {
+            sink_.error(t.range, fmt::format("var\"{}\" is the keyword {}: it cannot name a "
+                                             "generator",
+                                             t.text, t.text));
+        }
+    }
+
     void string() {
         std::size_t b = i_++;
         std::string out;
@@ -318,6 +340,20 @@ std::vector<Token> lex(const SourceManager& sources, std::uint32_t file, Diagnos
 bool is_identifier(std::string_view s) {
     return !s.empty() && ident_end(s, 0) == s.size() && s != "begin" && s != "end" && s != "true" &&
            s != "false";
+}
+
+std::string quoted_name(std::string_view s) {
+    if (is_identifier(s)) {
+        return std::string(s);
+    }
+    std::string out = "var\"";
+    for (char c : s) {
+        if (c == '"' || c == '\\') {
+            out += '\\';
+        }
+        out += c;
+    }
+    return out + "\"";
 }
 
 } // namespace catplan::lang

@@ -307,6 +307,30 @@ end
     EXPECT_TRUE(again.instance("Y") == x) << text;
 }
 
+TEST(Printing, NamesThatAreNotIdentifiersRoundTripQuoted) {
+    // PDDL's names (on-table, pick-up) are written var"on-table" and read back as they were.
+    Loaded l(R"(
+@present var"blocks-4ops"(FreeSchema) begin
+  (block, var"on-table")::Ob
+  var"on-table_1"::Hom(var"on-table", block)
+end
+@acset_colim var"state-1"(var"blocks-4ops") begin
+  (a, b)::block
+  (var"t-1")::var"on-table"
+  var"on-table_1"(var"t-1") == b
+end
+)");
+    ASSERT_FALSE(l.sink.has_errors()) << l.sink.render();
+    const ACSet& x = l.instance("state-1");
+    EXPECT_EQ(x.schema().name(), "blocks-4ops");
+    std::string text = print_schema(x.schema()) + print_instance(x, "again-1");
+    EXPECT_NE(text.find("var\"on-table_1\"::Hom(var\"on-table\", block)"), std::string::npos)
+        << text;
+    Loaded again(text);
+    ASSERT_FALSE(again.sink.has_errors()) << again.sink.render() << text;
+    EXPECT_TRUE(again.instance("again-1") == x) << text;
+}
+
 TEST(Import, ResolvesRelativeToTheImportingFile) {
     SourceManager sources;
     DiagnosticSink sink(sources);

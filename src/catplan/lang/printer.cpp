@@ -23,13 +23,13 @@ std::string plural(std::size_t n, std::string_view noun) {
 std::string path_term(const Schema& s, const Path& p) {
     std::vector<std::string> names;
     for (HomId f : p.homs) {
-        names.push_back(s.hom(f).name);
+        names.push_back(quoted_name(s.hom(f).name));
     }
     if (p.attr) {
-        names.push_back(s.attr(*p.attr).name);
+        names.push_back(quoted_name(s.attr(*p.attr).name));
     }
     if (names.empty()) {
-        return fmt::format("id({})", s.ob(p.dom).name);
+        return fmt::format("id({})", quoted_name(s.ob(p.dom).name));
     }
     if (names.size() == 1) {
         return names[0];
@@ -140,29 +140,31 @@ std::string summarize(const Declaration& d) {
 }
 
 std::string print_schema(const Schema& s) {
-    std::string out = fmt::format("@present {}(FreeSchema) begin\n", s.name());
+    std::string out = fmt::format("@present {}(FreeSchema) begin\n", quoted_name(s.name()));
     for (std::uint32_t i = 0; i < s.num_obs(); ++i) {
-        out += fmt::format("  {}::Ob\n", s.ob(ObId(i)).name);
+        out += fmt::format("  {}::Ob\n", quoted_name(s.ob(ObId(i)).name));
     }
     for (std::uint32_t i = 0; i < s.num_homs(); ++i) {
         const auto& h = s.hom(HomId(i));
-        out += fmt::format("  {}::Hom({}, {})\n", h.name, s.ob(h.dom).name, s.ob(h.codom).name);
+        out += fmt::format("  {}::Hom({}, {})\n", quoted_name(h.name),
+                           quoted_name(s.ob(h.dom).name), quoted_name(s.ob(h.codom).name));
     }
     for (std::uint32_t i = 0; i < s.num_attr_types(); ++i) {
         const auto& t = s.attr_type(AttrTypeId(i));
         if (t.kind == ValueKind::Unknown) {
-            out += fmt::format("  {}::AttrType\n", t.name);
+            out += fmt::format("  {}::AttrType\n", quoted_name(t.name));
         } else {
-            out += fmt::format("  {}::AttrType({})\n", t.name, schema::to_string(t.kind));
+            out +=
+                fmt::format("  {}::AttrType({})\n", quoted_name(t.name), schema::to_string(t.kind));
         }
     }
     for (std::uint32_t i = 0; i < s.num_attrs(); ++i) {
         const auto& a = s.attr(AttrId(i));
-        out += fmt::format("  {}::Attr({}, {})\n", a.name, s.ob(a.dom).name,
-                           s.attr_type(a.codom).name);
+        out += fmt::format("  {}::Attr({}, {})\n", quoted_name(a.name),
+                           quoted_name(s.ob(a.dom).name), quoted_name(s.attr_type(a.codom).name));
     }
     for (const auto& eq : s.equations()) {
-        std::string named = eq.name.empty() ? "" : eq.name + " := ";
+        std::string named = eq.name.empty() ? "" : quoted_name(eq.name) + " := ";
         out += fmt::format("  {}{} == {}\n", named, path_term(s, eq.lhs), path_term(s, eq.rhs));
     }
     return out + "end\n";
@@ -175,7 +177,9 @@ std::string print_instance(const ACSet& x, std::string_view name) {
     std::set<std::string> used;
     auto pick = [&](std::string_view wanted, std::string fallback) {
         std::string n(wanted);
-        if (!is_identifier(n) || used.count(n)) {
+        // A name that is not an identifier is written quoted (var"on-table"); one with a line
+        // break in it could not be.
+        if (n.empty() || n.find_first_of("\n\r") != std::string::npos || used.count(n)) {
             n = std::move(fallback);
             while (used.count(n)) {
                 n += "_";
@@ -199,16 +203,25 @@ std::string print_instance(const ACSet& x, std::string_view name) {
                      fmt::format("_{}{}", s.attr_type(AttrTypeId(t)).name, j + 1)));
         }
     }
-    std::string out = fmt::format("@acset_colim {}({}) begin\n", name, s.name());
+    for (auto* names : {&part_names, &var_names}) {
+        for (auto& row : *names) {
+            for (auto& n : row) {
+                n = quoted_name(n);
+            }
+        }
+    }
+    std::string out =
+        fmt::format("@acset_colim {}({}) begin\n", quoted_name(name), quoted_name(s.name()));
     for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
         if (!part_names[o].empty()) {
-            out += fmt::format("  ({})::{}\n", fmt::join(part_names[o], ", "), s.ob(ObId(o)).name);
+            out += fmt::format("  ({})::{}\n", fmt::join(part_names[o], ", "),
+                               quoted_name(s.ob(ObId(o)).name));
         }
     }
     for (std::uint32_t t = 0; t < s.num_attr_types(); ++t) {
         if (!var_names[t].empty()) {
             out += fmt::format("  ({})::{}\n", fmt::join(var_names[t], ", "),
-                               s.attr_type(AttrTypeId(t)).name);
+                               quoted_name(s.attr_type(AttrTypeId(t)).name));
         }
     }
     for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
@@ -218,21 +231,22 @@ std::string print_instance(const ACSet& x, std::string_view name) {
             for (HomId f : s.homs_from(ob)) {
                 Part q = x.subpart(f, p);
                 if (q == kNoPart) {
-                    out += fmt::format("  # {}({}) is unset\n", s.hom(f).name, pn);
+                    out += fmt::format("  # {}({}) is unset\n", quoted_name(s.hom(f).name), pn);
                 } else {
-                    out += fmt::format("  {}({}) == {}\n", s.hom(f).name, pn,
+                    out += fmt::format("  {}({}) == {}\n", quoted_name(s.hom(f).name), pn,
                                        part_names[s.hom(f).codom.index()][q]);
                 }
             }
             for (AttrId a : s.attrs_from(ob)) {
                 const Value& v = x.subpart(a, p);
                 if (v.is_unset()) {
-                    out += fmt::format("  # {}({}) is unset\n", s.attr(a).name, pn);
+                    out += fmt::format("  # {}({}) is unset\n", quoted_name(s.attr(a).name), pn);
                 } else if (v.is_var()) {
-                    out += fmt::format("  {}({}) == {}\n", s.attr(a).name, pn,
+                    out += fmt::format("  {}({}) == {}\n", quoted_name(s.attr(a).name), pn,
                                        var_names[s.attr(a).codom.index()][v.var_index()]);
                 } else {
-                    out += fmt::format("  {}({}) == {}\n", s.attr(a).name, pn, v.to_string());
+                    out += fmt::format("  {}({}) == {}\n", quoted_name(s.attr(a).name), pn,
+                                       v.to_string());
                 }
             }
         }

@@ -107,4 +107,8 @@ std::string to_string(const Expr& e);
 /// Whether `s` lexes as one identifier that is not a keyword.
 bool is_identifier(std::string_view s);
 
+/// `s` as the language writes a name: itself when it is an identifier, else Julia's quoted form
+/// `var"on-table"` (a '"' or '\\' in it escaped).
+std::string quoted_name(std::string_view s);
+
 } // namespace catplan::lang

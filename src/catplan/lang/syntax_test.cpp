@@ -65,6 +65,28 @@ TEST(Lexer, AcceptsUnicodeIdentifiers) {
     EXPECT_EQ(l.texts(), (std::vector<std::string>{"dü_2", "Größe"}));
 }
 
+TEST(Lexer, ReadsJuliasQuotedIdentifiers) {
+    // var"..." is an identifier whatever it holds (PDDL's hyphens), located over the whole form.
+    Lexed l(R"(var"on-table"::Ob var"a\"b" var x)");
+    ASSERT_FALSE(l.sink.has_errors()) << l.sink.render();
+    EXPECT_EQ(l.texts(), (std::vector<std::string>{"on-table", "::", "Ob", "a\"b", "var", "x"}));
+    EXPECT_EQ(l.tokens[0].kind, TokenKind::Ident);
+    EXPECT_EQ(l.tokens[0].range.end - l.tokens[0].range.begin, 13U);
+    EXPECT_EQ(quoted_name("on-table"), "var\"on-table\"");
+    EXPECT_EQ(quoted_name("a\"b"), R"(var"a\"b")");
+    EXPECT_EQ(quoted_name("block"), "block");
+    EXPECT_EQ(quoted_name("end"), "var\"end\"");
+}
+
+TEST(Lexer, RejectsQuotedIdentifiersThatNameNothingOrAKeyword) {
+    Lexed l(R"(var"" var"end" var"open)");
+    EXPECT_EQ(l.sink.num_errors(), 3U);
+    std::string all = l.sink.render();
+    EXPECT_NE(all.find("names nothing"), std::string::npos) << all;
+    EXPECT_NE(all.find("is the keyword end"), std::string::npos) << all;
+    EXPECT_NE(all.find("unterminated string"), std::string::npos) << all;
+}
+
 TEST(Lexer, ReportsBadInputWithLocations) {
     Lexed l("a $ \"open\n#= never closed");
     EXPECT_EQ(l.sink.num_errors(), 3u);
