@@ -2,6 +2,7 @@
 
 #include "catplan/base/assert.hpp"
 #include "catplan/migrate/describe.hpp"
+#include "catplan/report/explain.hpp"
 #include "catplan/report/svg.hpp"
 
 #include <algorithm>
@@ -42,6 +43,8 @@ code, .step { font-family: ui-monospace, "DejaVu Sans Mono", Menlo, monospace; }
 ul.bindings { margin: 0.3em 0 0 0; padding-left: 1.2em; font-family: ui-monospace, monospace;
               font-size: 0.9em; }
 ul.bindings li.shared { font-weight: bold; }
+ul.reasons { margin: 0.3em 0 0 0; padding-left: 1.2em; font-size: 0.85em; color: #333; }
+.brief { background: #f6f8fb; border: 1px solid #d5deea; border-radius: 6px; padding: 0.2em 1em; }
 .note { color: #8a5a00; font-size: 0.9em; }
 .failed { color: #8a1f1f; font-weight: bold; }
 .pictures { display: flex; flex-wrap: wrap; gap: 1em; align-items: flex-start; }
@@ -128,6 +131,39 @@ std::string header_section(const ReportInput& in) {
              "valid by construction (paper, Appendix A); it was checked anyway.</p>\n";
     }
     return o;
+}
+
+/// "In brief": what each target object is sent to and what the map does not see, in words.
+std::string brief_section(const ReportInput& in) {
+    const auto& f = *in.map;
+    MapSummary brief = summarize_map(f);
+    std::string o = "<section class=\"brief\">\n<h2>In brief</h2>\n";
+    o += fmt::format("<p>The map {} sends each {} object to a {} object or to a set of them (a "
+                     "query); a target step is the source step read through these images.</p>"
+                     "\n<ul>\n",
+                     escape_html(in.map_name), escape_html(f.target()->name()),
+                     escape_html(f.source()->name()));
+    for (const auto& line : brief.objects) {
+        o += fmt::format("<li><code>{} ⇒ {}</code></li>\n", escape_html(line.name),
+                         escape_html(line.image));
+    }
+    o += "</ul>\n";
+    if (brief.lost.empty()) {
+        o += "<p>Every source generator has an image: the map loses nothing.</p>\n";
+        return o + "</section>\n";
+    }
+    o += "<p>What the map loses (no target generator maps onto these source generators, so "
+         "the target states and plan say nothing of them):</p>\n<ul>\n";
+    using schema::GeneratorKind;
+    for (auto [kind, noun] :
+         {std::pair{GeneratorKind::Ob, "objects"}, std::pair{GeneratorKind::Hom, "homs"},
+          std::pair{GeneratorKind::AttrType, "attribute types"},
+          std::pair{GeneratorKind::Attr, "attributes"}}) {
+        if (auto names = lost_names(brief, kind); !names.empty()) {
+            o += fmt::format("<li>{}: <code>{}</code></li>\n", noun, escape_html(names));
+        }
+    }
+    return o + "</ul>\n</section>\n";
 }
 
 std::string goal_section(const Verdict& v) {
@@ -244,6 +280,30 @@ std::string states_details(const ReportInput& in, std::size_t i, Pictures& pictu
     return o + "</div></details>\n";
 }
 
+/// Why each target part bound is the image of the source part bound (explain.hpp), as a list;
+/// "" when the states were not kept or the step was not carried out by its generated action.
+std::string reasons_list(const ReportInput& in, std::size_t i) {
+    const TransferResult& t = *in.transfer;
+    const auto& st = t.steps[i];
+    const auto* source_rule = in.problem->domain->find_rule(st.source.action);
+    const auto* target_rule =
+        t.target_domain.domain ? t.target_domain.domain->find_rule(st.source.action) : nullptr;
+    if (source_rule == nullptr || target_rule == nullptr || t.source_states.size() <= i ||
+        t.target_states.size() <= i) {
+        return {};
+    }
+    auto reasons = binding_reasons(*in.map, *source_rule, *target_rule, st, t.source_states[i],
+                                   t.target_states[i]);
+    if (reasons.empty()) {
+        return {};
+    }
+    std::string o = "<ul class=\"reasons\">";
+    for (const auto& r : reasons) {
+        o += fmt::format("<li>{}</li>", escape_html(r));
+    }
+    return o + "</ul>";
+}
+
 std::string step_row(const ReportInput& in, std::size_t i, Pictures& pictures) {
     const auto& st = in.transfer->steps[i];
     auto source_generators = bound_generators(st.source_bindings);
@@ -257,6 +317,7 @@ std::string step_row(const ReportInput& in, std::size_t i, Pictures& pictures) {
                      escape_html(st.source.to_string()), bindings_list(st.source_bindings, shared));
     o += fmt::format("<td><span class=\"step\">{}</span>{}", escape_html(st.target.to_string()),
                      bindings_list(st.target_bindings, shared));
+    o += reasons_list(in, i);
     if (!st.lost_parameters.empty()) {
         std::string lost;
         for (const auto& p : st.lost_parameters) {
@@ -282,6 +343,8 @@ std::string steps_section(const ReportInput& in, Pictures& pictures) {
          "precondition is named after the source part its tuple starts at, so the target match "
          "binds the target parts named like the source parts that the source match binds. "
          "Bold bindings are those of the generators both actions have (the parts the map carries); "
+         "below them, each target part bound is given with the reason it is the image of the "
+         "source part: what the source state says of that part and the map's image of its object; "
          "open a step to see the states before "
          "and after it on both sides.</p>\n";
     o += fmt::format("<table class=\"steps\"><tr><th>#</th><th>source step ({})</th>"
@@ -377,6 +440,7 @@ std::string html_report(const ReportInput& in) {
     Pictures pictures;
     std::string body;
     body += header_section(in);
+    body += brief_section(in);
     body += goal_section(in.transfer->verdict);
     body += ontology_section(in, pictures);
     body += problem_section(in, pictures);
