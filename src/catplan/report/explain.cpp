@@ -130,6 +130,22 @@ std::string and_list(const std::vector<std::string>& items) {
     return fmt::format("{} and {}", fmt::join(head, ", "), items.back());
 }
 
+// The parts of `parts_of` (deleted_parts or created_parts) of every object, through m.
+template <typename Parts>
+std::vector<dot::PartClass> marks(const rewrite::Rule& rule, const hom::ACSetMorphism& m,
+                                  Parts parts_of, const char* css_class) {
+    std::vector<dot::PartClass> out;
+    if (m.components.empty()) {
+        return out; // no morphism was kept
+    }
+    for (std::uint32_t o = 0; o < rule.L.schema().num_obs(); ++o) {
+        for (Part q : parts_of(ObId(o))) {
+            out.push_back({ObId(o), m.components[o][q], css_class});
+        }
+    }
+    return out;
+}
+
 } // namespace
 
 MapSummary summarize_map(const SchemaMap& f) {
@@ -236,6 +252,28 @@ std::vector<std::string> binding_reasons(const SchemaMap& f, const rewrite::Rule
                 out.push_back(item.second);
             }
         }
+    }
+    return out;
+}
+
+StepMarks step_marks(const rewrite::Rule* source_rule, const rewrite::Rule* target_rule,
+                     const transfer::StepTransfer& step) {
+    StepMarks out;
+    auto side = [](const rewrite::Rule& r, const hom::ACSetMorphism& match,
+                   const hom::ACSetMorphism& comatch, std::vector<dot::PartClass>& before,
+                   std::vector<dot::PartClass>& after) {
+        before = marks(
+            r, match, [&](ObId ob) { return r.deleted_parts(ob); }, "deleted");
+        after = marks(
+            r, comatch, [&](ObId ob) { return r.created_parts(ob); }, "created");
+    };
+    if (source_rule != nullptr) {
+        side(*source_rule, step.source_match, step.source_comatch, out.source_before,
+             out.source_after);
+    }
+    if (target_rule != nullptr && step.kind == transfer::StepTransfer::Kind::Generated) {
+        side(*target_rule, step.target_match, step.target_comatch, out.target_before,
+             out.target_after);
     }
     return out;
 }

@@ -9,6 +9,7 @@
 //   auto why = binding_reasons(map, *source_rule, *target_rule, step, x, y);
 //   // "E ↦ BreadSliced E because hasColor(E) == \"purple\" and BreadSliced ⇒ {...}"
 
+#include "catplan/dot/dot.hpp"
 #include "catplan/migrate/describe.hpp"
 #include "catplan/migrate/schema_map.hpp"
 #include "catplan/rewrite/rule.hpp"
@@ -51,5 +52,17 @@ std::vector<std::string> binding_reasons(const migrate::SchemaMap& f,
                                          const rewrite::Rule& target_rule,
                                          const transfer::StepTransfer& step, const acset::ACSet& x,
                                          const acset::ACSet& y);
+
+/// What a step deletes and creates, as parts of the pictures of its states (CSS classes
+/// "deleted" and "created").
+struct StepMarks {
+    std::vector<dot::PartClass> source_before, source_after, target_before, target_after;
+};
+
+/// The parts of L outside l(K) through the match (in the state before) and of R outside r(K)
+/// through the comatch (in the state after), on each side; a side whose rule is null, or the
+/// target side of a step not carried out by its generated action, is left unmarked.
+StepMarks step_marks(const rewrite::Rule* source_rule, const rewrite::Rule* target_rule,
+                     const transfer::StepTransfer& step);
 
 } // namespace catplan::report

@@ -45,6 +45,15 @@ ul.bindings { margin: 0.3em 0 0 0; padding-left: 1.2em; font-family: ui-monospac
 ul.bindings li.shared { font-weight: bold; }
 ul.reasons { margin: 0.3em 0 0 0; padding-left: 1.2em; font-size: 0.85em; color: #333; }
 .brief { background: #f6f8fb; border: 1px solid #d5deea; border-radius: 6px; padding: 0.2em 1em; }
+/* What a step deletes and creates, in its state pictures (classes set by explain.hpp). */
+.deleted polygon, .deleted path, .deleted ellipse { stroke: #c0392b; stroke-width: 3px;
+                                                    stroke-dasharray: 6 3; }
+.created polygon, .created path, .created ellipse { stroke: #1e8a3a; stroke-width: 3px; }
+.legend { font-size: 0.85em; color: #444; }
+.swatch { display: inline-block; width: 1.4em; height: 0.8em; vertical-align: middle;
+          border-radius: 3px; margin-left: 0.6em; }
+.swatch.deleted { border: 3px dashed #c0392b; }
+.swatch.created { border: 3px solid #1e8a3a; }
 .note { color: #8a5a00; font-size: 0.9em; }
 .failed { color: #8a1f1f; font-weight: bold; }
 .pictures { display: flex; flex-wrap: wrap; gap: 1em; align-items: flex-start; }
@@ -260,6 +269,15 @@ std::set<std::string> bound_generators(const std::string& text) {
     return out;
 }
 
+/// The source action of step i and its migration (each null when there is none).
+std::pair<const rewrite::Rule*, const rewrite::Rule*> rules_of(const ReportInput& in,
+                                                               std::size_t i) {
+    const TransferResult& t = *in.transfer;
+    const std::string& action = t.steps[i].source.action;
+    return {in.problem->domain->find_rule(action),
+            t.target_domain.domain ? t.target_domain.domain->find_rule(action) : nullptr};
+}
+
 std::string states_details(const ReportInput& in, std::size_t i, Pictures& pictures) {
     const TransferResult& t = *in.transfer;
     if (t.source_states.size() <= i + 1 || t.target_states.size() <= i + 1) {
@@ -268,15 +286,23 @@ std::string states_details(const ReportInput& in, std::size_t i, Pictures& pictu
     std::string o = fmt::format(
         "<details><summary>States before and after step {}</summary>\n<div class=\"grid\">\n",
         i + 1);
-    auto state = [&](const acset::ACSet& x, std::string name, std::string caption) {
-        return pictures.figure(dot::state_to_dot(x, name, in.dot), caption);
+    o += "<p class=\"legend\"><span class=\"swatch deleted\"></span> deleted by the step (in "
+         "the state before) <span class=\"swatch created\"></span> created by the step (in the "
+         "state after)</p>\n";
+    auto [source_rule, target_rule] = rules_of(in, i);
+    StepMarks marks = step_marks(source_rule, target_rule, t.steps[i]);
+    auto state = [&](const acset::ACSet& x, std::string name, std::string caption,
+                     const std::vector<dot::PartClass>& classes) {
+        return pictures.figure(dot::state_to_dot(x, name, in.dot, classes), caption);
     };
-    o += state(t.source_states[i], fmt::format("X{}", i), fmt::format("source before: X{}", i));
-    o += state(t.target_states[i], fmt::format("Y{}", i), fmt::format("target before: Y{}", i));
+    o += state(t.source_states[i], fmt::format("X{}", i), fmt::format("source before: X{}", i),
+               marks.source_before);
+    o += state(t.target_states[i], fmt::format("Y{}", i), fmt::format("target before: Y{}", i),
+               marks.target_before);
     o += state(t.source_states[i + 1], fmt::format("X{}", i + 1),
-               fmt::format("source after: X{}", i + 1));
+               fmt::format("source after: X{}", i + 1), marks.source_after);
     o += state(t.target_states[i + 1], fmt::format("Y{}", i + 1),
-               fmt::format("target after: Y{}", i + 1));
+               fmt::format("target after: Y{}", i + 1), marks.target_after);
     return o + "</div></details>\n";
 }
 
@@ -285,9 +311,7 @@ std::string states_details(const ReportInput& in, std::size_t i, Pictures& pictu
 std::string reasons_list(const ReportInput& in, std::size_t i) {
     const TransferResult& t = *in.transfer;
     const auto& st = t.steps[i];
-    const auto* source_rule = in.problem->domain->find_rule(st.source.action);
-    const auto* target_rule =
-        t.target_domain.domain ? t.target_domain.domain->find_rule(st.source.action) : nullptr;
+    auto [source_rule, target_rule] = rules_of(in, i);
     if (source_rule == nullptr || target_rule == nullptr || t.source_states.size() <= i ||
         t.target_states.size() <= i) {
         return {};

@@ -321,6 +321,40 @@ TEST(Explain, EachBindingComesWithItsReason) {
     EXPECT_TRUE(contains(m.html, escape_html(reasons.front())));
 }
 
+TEST(Explain, StatePicturesMarkWhatTheStepDeletesAndCreates) {
+    Made m;
+    ASSERT_TRUE(m.t.verdict.valid()) << m.t.verdict.reason();
+    const auto& st = m.t.steps[0]; // move(A, B, C): deletes On A B, creates On A C
+    const auto* rule = m.fx.problem->domain->find_rule("move");
+    StepMarks marks = step_marks(rule, m.t.target_domain.domain->find_rule("move"), st);
+    ASSERT_EQ(marks.source_after.size(), 1U);
+    const auto& created = marks.source_after[0];
+    EXPECT_EQ(created.ob, m.fx.t.on);
+    EXPECT_EQ(created.css_class, "created");
+    const ACSet& after = m.t.source_states[1];
+    EXPECT_EQ(after.subpart(m.fx.t.on_l, created.part), *after.find_part(m.fx.t.block, "A"));
+    EXPECT_EQ(after.subpart(m.fx.t.on_r, created.part), *after.find_part(m.fx.t.block, "C"));
+    // Drawn as a node (relation edges off), the created part's node carries the class.
+    dot::DotOptions nodes;
+    nodes.relation_edges = false;
+    std::string picture = dot::state_to_dot(after, "X1", nodes, marks.source_after);
+    std::string node = fmt::format("On_{} [", created.part + 1);
+    std::size_t at = picture.find(node);
+    ASSERT_NE(at, std::string::npos) << picture;
+    EXPECT_TRUE(contains(picture.substr(at, picture.find('\n', at) - at), "class=\"created\""))
+        << picture;
+    // The deleted On is marked in the state before, on both sides, and the target's created
+    // InReceptacle in the target's state after.
+    ASSERT_EQ(marks.source_before.size(), 1U);
+    EXPECT_EQ(marks.source_before[0].css_class, "deleted");
+    EXPECT_FALSE(marks.target_before.empty());
+    EXPECT_FALSE(marks.target_after.empty());
+    // On the page, as SVG classes (On is drawn as an edge there), with a legend.
+    EXPECT_GE(count(m.html, "class=\"edge created\""), 2 * m.t.steps.size());
+    EXPECT_GE(count(m.html, "class=\"edge deleted\""), 2 * m.t.steps.size());
+    EXPECT_TRUE(contains(m.html, "<span class=\"swatch created\">"));
+}
+
 TEST(Report, SvgIdsAreUniqueOnThePage) {
     Made m;
     std::set<std::string> seen;
