@@ -328,6 +328,13 @@ std::string reasons_list(const ReportInput& in, std::size_t i) {
     return o + "</ul>";
 }
 
+/// The start of step i's row, anchored as `#step-N` (N counted from 1) so that a step can be
+/// linked to.
+std::string step_opening(std::size_t i) {
+    return fmt::format("<tr id=\"step-{0}\"><td class=\"num\"><a href=\"#step-{0}\">{0}</a></td>",
+                       i + 1);
+}
+
 std::string step_row(const ReportInput& in, std::size_t i, Pictures& pictures) {
     const auto& st = in.transfer->steps[i];
     auto source_generators = bound_generators(st.source_bindings);
@@ -336,7 +343,7 @@ std::string step_row(const ReportInput& in, std::size_t i, Pictures& pictures) {
     std::set_intersection(source_generators.begin(), source_generators.end(),
                           target_generators.begin(), target_generators.end(),
                           std::inserter(shared, shared.end()));
-    std::string o = fmt::format("<tr><td class=\"num\">{}</td>", i + 1);
+    std::string o = step_opening(i);
     o += fmt::format("<td><span class=\"step\">{}</span>{}</td>",
                      escape_html(st.source.to_string()), bindings_list(st.source_bindings, shared));
     o += fmt::format("<td><span class=\"step\">{}</span>{}", escape_html(st.target.to_string()),
@@ -384,13 +391,13 @@ std::string steps_section(const ReportInput& in, Pictures& pictures) {
         std::string why = failed->kind == Fault::Kind::SourcePlan
                               ? "the source plan fails here: " + failed->why
                               : failed->why;
-        o += fmt::format("<tr><td class=\"num\">{}</td><td><span class=\"step\">{}</span></td>"
-                         "<td class=\"failed\">not transferred: {}</td></tr>\n",
-                         i + 1, escape_html(source), escape_html(why));
+        o += step_opening(i) + fmt::format("<td><span class=\"step\">{}</span></td>"
+                                           "<td class=\"failed\">not transferred: {}</td></tr>\n",
+                                           escape_html(source), escape_html(why));
         for (std::size_t j = i + 1; j < in.plan->steps.size(); ++j) {
-            o += fmt::format("<tr><td class=\"num\">{}</td><td><span class=\"step\">{}</span>"
-                             "</td><td class=\"muted\">(not reached)</td></tr>\n",
-                             j + 1, escape_html(in.plan->steps[j].to_string()));
+            o += step_opening(j) + fmt::format("<td><span class=\"step\">{}</span>"
+                                               "</td><td class=\"muted\">(not reached)</td></tr>\n",
+                                               escape_html(in.plan->steps[j].to_string()));
         }
     }
     o += "</table>\n";

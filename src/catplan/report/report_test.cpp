@@ -259,6 +259,7 @@ TEST(Report, ShowsTheVerdictStepsAndPictures) {
     EXPECT_FALSE(contains(h, "<!DOCTYPE svg"));
     EXPECT_TRUE(contains(h, "Q_BreadSliced"));                  // the map's query box
     EXPECT_TRUE(contains(h, "States before and after step 2")); // a <details> per step
+    EXPECT_TRUE(contains(h, "<tr id=\"step-2\">"));             // an anchor per step
     EXPECT_EQ(count(h, "<details"), count(h, "</details>"));
     EXPECT_EQ(unbalanced_tags(h), "");
     EXPECT_EQ(network_references(h), std::vector<std::string>{});
