@@ -214,6 +214,9 @@ public:
         }
     }
 
+    /// Marks parts with CSS classes (state pictures only: the parts are this panel's).
+    void set_classes(const std::vector<PartClass>* classes) { classes_ = classes; }
+
     /// The node id of a part drawn as a node.
     std::string node_id(ObId ob, Part p) const {
         return prefix_ + s_.ob(ob).name + "_" + std::to_string(p + 1);
@@ -307,6 +310,20 @@ private:
         return text;
     }
 
+    /// `, class="..."` for a marked part, else "".
+    std::string class_attr(ObId ob, Part p) const {
+        if (classes_ == nullptr) {
+            return {};
+        }
+        std::string out;
+        for (const auto& c : *classes_) {
+            if (c.ob == ob && c.part == p) {
+                out += (out.empty() ? "" : " ") + c.css_class;
+            }
+        }
+        return out.empty() ? out : fmt::format(", class=\"{}\"", escape_quoted(out));
+    }
+
     bool is_node(ObId ob, Part p) const {
         if (folding_.relation[ob.index()]) {
             auto homs = s_.homs_from(ob);
@@ -345,7 +362,8 @@ private:
         std::string label = x_.part_label(ob, p);
         const auto& rows = rows_[ob.index()][p];
         if (rows.empty()) {
-            w.line(fmt::format("{} [label=\"{}\"];", dot_id(node_id(ob, p)), escape_quoted(label)));
+            w.line(fmt::format("{} [label=\"{}\"{}];", dot_id(node_id(ob, p)), escape_quoted(label),
+                               class_attr(ob, p)));
             return;
         }
         std::string html = fmt::format("<TABLE BORDER=\"1\" CELLBORDER=\"0\" CELLSPACING=\"0\" "
@@ -363,7 +381,8 @@ private:
             html += fmt::format("<HR/><TR><TD {}>{}</TD></TR>", attrs, row.html);
         }
         html += "</TABLE>";
-        w.line(fmt::format("{} [shape=plain, label=<{}>];", dot_id(node_id(ob, p)), html));
+        w.line(fmt::format("{} [shape=plain, label=<{}>{}];", dot_id(node_id(ob, p)), html,
+                           class_attr(ob, p)));
     }
 
     void write_relation_edges(Writer& w, ObId ob) const {
@@ -375,10 +394,10 @@ private:
             }
             auto part = x_.part_name(ob, p);
             std::string label = part.empty() ? name : fmt::format("{} {}", name, part);
-            w.line(fmt::format("{} -> {} [label=\"{}\", penwidth=1.6, color=\"#555555\"];",
+            w.line(fmt::format("{} -> {} [label=\"{}\", penwidth=1.6, color=\"#555555\"{}];",
                                dot_id(node_id(s_.hom(homs[0]).codom, x_.subpart(homs[0], p))),
                                dot_id(node_id(s_.hom(homs[1]).codom, x_.subpart(homs[1], p))),
-                               escape_quoted(label)));
+                               escape_quoted(label), class_attr(ob, p)));
         }
     }
 
@@ -388,6 +407,7 @@ private:
     const Folding& folding_;
     const DotOptions& o_;
     std::vector<std::vector<std::vector<Row>>> rows_; // by object, by part
+    const std::vector<PartClass>* classes_ = nullptr;
 };
 
 /// An edge end: a node, or a row of a node with an optional compass point ("e", "w") so that an
@@ -547,11 +567,13 @@ std::string schema_to_dot(const Schema& s, const DotOptions& o) {
     return w.take();
 }
 
-std::string state_to_dot(const ACSet& x, std::string_view name, const DotOptions& o) {
+std::string state_to_dot(const ACSet& x, std::string_view name, const DotOptions& o,
+                         const std::vector<PartClass>& classes) {
     Writer w;
     header(w, name, name, o, o.left_to_right, false);
     Folding folding = decide_folding(x.schema(), o, {});
     Panel panel(x, "", folding, o);
+    panel.set_classes(&classes);
     if (panel.has_nodes()) {
         panel.write(w);
     } else {

@@ -42,6 +42,7 @@
 
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace catplan::dot {
 
@@ -63,9 +64,20 @@ struct DotOptions {
 /// the equations when there are any.
 std::string schema_to_dot(const schema::Schema& s, const DotOptions& options = {});
 
-/// A DOT digraph of a state, titled `name`, with one cluster per object that has parts.
+/// A CSS class given to one part of a state's picture (Graphviz's `class` attribute, which SVG
+/// output puts on the part's element): how a report marks what a step deletes or creates.
+struct PartClass {
+    ObId ob;
+    Part part = kNoPart;
+    std::string css_class;
+};
+
+/// A DOT digraph of a state, titled `name`, with one cluster per object that has parts; a part
+/// in `classes` carries its class on its node, or on its edge for a relation part drawn as one
+/// (a predicate folded into a row has no element of its own and is not marked).
 std::string state_to_dot(const acset::ACSet& x, std::string_view name,
-                         const DotOptions& options = {});
+                         const DotOptions& options = {},
+                         const std::vector<PartClass>& classes = {});
 
 /// A DOT digraph of a rule: clusters Pre, Keep and Eff (and one per application condition) with
 /// the maps between them as dashed edges.

@@ -2,6 +2,7 @@
 
 #include "catplan/base/assert.hpp"
 #include "catplan/migrate/describe.hpp"
+#include "catplan/report/explain.hpp"
 #include "catplan/report/svg.hpp"
 
 #include <algorithm>
@@ -42,6 +43,17 @@ code, .step { font-family: ui-monospace, "DejaVu Sans Mono", Menlo, monospace; }
 ul.bindings { margin: 0.3em 0 0 0; padding-left: 1.2em; font-family: ui-monospace, monospace;
               font-size: 0.9em; }
 ul.bindings li.shared { font-weight: bold; }
+ul.reasons { margin: 0.3em 0 0 0; padding-left: 1.2em; font-size: 0.85em; color: #333; }
+.brief { background: #f6f8fb; border: 1px solid #d5deea; border-radius: 6px; padding: 0.2em 1em; }
+/* What a step deletes and creates, in its state pictures (classes set by explain.hpp). */
+.deleted polygon, .deleted path, .deleted ellipse { stroke: #c0392b; stroke-width: 3px;
+                                                    stroke-dasharray: 6 3; }
+.created polygon, .created path, .created ellipse { stroke: #1e8a3a; stroke-width: 3px; }
+.legend { font-size: 0.85em; color: #444; }
+.swatch { display: inline-block; width: 1.4em; height: 0.8em; vertical-align: middle;
+          border-radius: 3px; margin-left: 0.6em; }
+.swatch.deleted { border: 3px dashed #c0392b; }
+.swatch.created { border: 3px solid #1e8a3a; }
 .note { color: #8a5a00; font-size: 0.9em; }
 .failed { color: #8a1f1f; font-weight: bold; }
 .pictures { display: flex; flex-wrap: wrap; gap: 1em; align-items: flex-start; }
@@ -128,6 +140,39 @@ std::string header_section(const ReportInput& in) {
              "valid by construction (paper, Appendix A); it was checked anyway.</p>\n";
     }
     return o;
+}
+
+/// "In brief": what each target object is sent to and what the map does not see, in words.
+std::string brief_section(const ReportInput& in) {
+    const auto& f = *in.map;
+    MapSummary brief = summarize_map(f);
+    std::string o = "<section class=\"brief\">\n<h2>In brief</h2>\n";
+    o += fmt::format("<p>The map {} sends each {} object to a {} object or to a set of them (a "
+                     "query); a target step is the source step read through these images.</p>"
+                     "\n<ul>\n",
+                     escape_html(in.map_name), escape_html(f.target()->name()),
+                     escape_html(f.source()->name()));
+    for (const auto& line : brief.objects) {
+        o += fmt::format("<li><code>{} ⇒ {}</code></li>\n", escape_html(line.name),
+                         escape_html(line.image));
+    }
+    o += "</ul>\n";
+    if (brief.lost.empty()) {
+        o += "<p>Every source generator has an image: the map loses nothing.</p>\n";
+        return o + "</section>\n";
+    }
+    o += "<p>What the map loses (no target generator maps onto these source generators, so "
+         "the target states and plan say nothing of them):</p>\n<ul>\n";
+    using schema::GeneratorKind;
+    for (auto [kind, noun] :
+         {std::pair{GeneratorKind::Ob, "objects"}, std::pair{GeneratorKind::Hom, "homs"},
+          std::pair{GeneratorKind::AttrType, "attribute types"},
+          std::pair{GeneratorKind::Attr, "attributes"}}) {
+        if (auto names = lost_names(brief, kind); !names.empty()) {
+            o += fmt::format("<li>{}: <code>{}</code></li>\n", noun, escape_html(names));
+        }
+    }
+    return o + "</ul>\n</section>\n";
 }
 
 std::string goal_section(const Verdict& v) {
@@ -224,6 +269,15 @@ std::set<std::string> bound_generators(const std::string& text) {
     return out;
 }
 
+/// The source action of step i and its migration (each null when there is none).
+std::pair<const rewrite::Rule*, const rewrite::Rule*> rules_of(const ReportInput& in,
+                                                               std::size_t i) {
+    const TransferResult& t = *in.transfer;
+    const std::string& action = t.steps[i].source.action;
+    return {in.problem->domain->find_rule(action),
+            t.target_domain.domain ? t.target_domain.domain->find_rule(action) : nullptr};
+}
+
 std::string states_details(const ReportInput& in, std::size_t i, Pictures& pictures) {
     const TransferResult& t = *in.transfer;
     if (t.source_states.size() <= i + 1 || t.target_states.size() <= i + 1) {
@@ -232,16 +286,53 @@ std::string states_details(const ReportInput& in, std::size_t i, Pictures& pictu
     std::string o = fmt::format(
         "<details><summary>States before and after step {}</summary>\n<div class=\"grid\">\n",
         i + 1);
-    auto state = [&](const acset::ACSet& x, std::string name, std::string caption) {
-        return pictures.figure(dot::state_to_dot(x, name, in.dot), caption);
+    o += "<p class=\"legend\"><span class=\"swatch deleted\"></span> deleted by the step (in "
+         "the state before) <span class=\"swatch created\"></span> created by the step (in the "
+         "state after)</p>\n";
+    auto [source_rule, target_rule] = rules_of(in, i);
+    StepMarks marks = step_marks(source_rule, target_rule, t.steps[i]);
+    auto state = [&](const acset::ACSet& x, std::string name, std::string caption,
+                     const std::vector<dot::PartClass>& classes) {
+        return pictures.figure(dot::state_to_dot(x, name, in.dot, classes), caption);
     };
-    o += state(t.source_states[i], fmt::format("X{}", i), fmt::format("source before: X{}", i));
-    o += state(t.target_states[i], fmt::format("Y{}", i), fmt::format("target before: Y{}", i));
+    o += state(t.source_states[i], fmt::format("X{}", i), fmt::format("source before: X{}", i),
+               marks.source_before);
+    o += state(t.target_states[i], fmt::format("Y{}", i), fmt::format("target before: Y{}", i),
+               marks.target_before);
     o += state(t.source_states[i + 1], fmt::format("X{}", i + 1),
-               fmt::format("source after: X{}", i + 1));
+               fmt::format("source after: X{}", i + 1), marks.source_after);
     o += state(t.target_states[i + 1], fmt::format("Y{}", i + 1),
-               fmt::format("target after: Y{}", i + 1));
+               fmt::format("target after: Y{}", i + 1), marks.target_after);
     return o + "</div></details>\n";
+}
+
+/// Why each target part bound is the image of the source part bound (explain.hpp), as a list;
+/// "" when the states were not kept or the step was not carried out by its generated action.
+std::string reasons_list(const ReportInput& in, std::size_t i) {
+    const TransferResult& t = *in.transfer;
+    const auto& st = t.steps[i];
+    auto [source_rule, target_rule] = rules_of(in, i);
+    if (source_rule == nullptr || target_rule == nullptr || t.source_states.size() <= i ||
+        t.target_states.size() <= i) {
+        return {};
+    }
+    auto reasons = binding_reasons(*in.map, *source_rule, *target_rule, st, t.source_states[i],
+                                   t.target_states[i]);
+    if (reasons.empty()) {
+        return {};
+    }
+    std::string o = "<ul class=\"reasons\">";
+    for (const auto& r : reasons) {
+        o += fmt::format("<li>{}</li>", escape_html(r));
+    }
+    return o + "</ul>";
+}
+
+/// The start of step i's row, anchored as `#step-N` (N counted from 1) so that a step can be
+/// linked to.
+std::string step_opening(std::size_t i) {
+    return fmt::format("<tr id=\"step-{0}\"><td class=\"num\"><a href=\"#step-{0}\">{0}</a></td>",
+                       i + 1);
 }
 
 std::string step_row(const ReportInput& in, std::size_t i, Pictures& pictures) {
@@ -252,11 +343,12 @@ std::string step_row(const ReportInput& in, std::size_t i, Pictures& pictures) {
     std::set_intersection(source_generators.begin(), source_generators.end(),
                           target_generators.begin(), target_generators.end(),
                           std::inserter(shared, shared.end()));
-    std::string o = fmt::format("<tr><td class=\"num\">{}</td>", i + 1);
+    std::string o = step_opening(i);
     o += fmt::format("<td><span class=\"step\">{}</span>{}</td>",
                      escape_html(st.source.to_string()), bindings_list(st.source_bindings, shared));
     o += fmt::format("<td><span class=\"step\">{}</span>{}", escape_html(st.target.to_string()),
                      bindings_list(st.target_bindings, shared));
+    o += reasons_list(in, i);
     if (!st.lost_parameters.empty()) {
         std::string lost;
         for (const auto& p : st.lost_parameters) {
@@ -282,6 +374,8 @@ std::string steps_section(const ReportInput& in, Pictures& pictures) {
          "precondition is named after the source part its tuple starts at, so the target match "
          "binds the target parts named like the source parts that the source match binds. "
          "Bold bindings are those of the generators both actions have (the parts the map carries); "
+         "below them, each target part bound is given with the reason it is the image of the "
+         "source part: what the source state says of that part and the map's image of its object; "
          "open a step to see the states before "
          "and after it on both sides.</p>\n";
     o += fmt::format("<table class=\"steps\"><tr><th>#</th><th>source step ({})</th>"
@@ -297,13 +391,13 @@ std::string steps_section(const ReportInput& in, Pictures& pictures) {
         std::string why = failed->kind == Fault::Kind::SourcePlan
                               ? "the source plan fails here: " + failed->why
                               : failed->why;
-        o += fmt::format("<tr><td class=\"num\">{}</td><td><span class=\"step\">{}</span></td>"
-                         "<td class=\"failed\">not transferred: {}</td></tr>\n",
-                         i + 1, escape_html(source), escape_html(why));
+        o += step_opening(i) + fmt::format("<td><span class=\"step\">{}</span></td>"
+                                           "<td class=\"failed\">not transferred: {}</td></tr>\n",
+                                           escape_html(source), escape_html(why));
         for (std::size_t j = i + 1; j < in.plan->steps.size(); ++j) {
-            o += fmt::format("<tr><td class=\"num\">{}</td><td><span class=\"step\">{}</span>"
-                             "</td><td class=\"muted\">(not reached)</td></tr>\n",
-                             j + 1, escape_html(in.plan->steps[j].to_string()));
+            o += step_opening(j) + fmt::format("<td><span class=\"step\">{}</span>"
+                                               "</td><td class=\"muted\">(not reached)</td></tr>\n",
+                                               escape_html(in.plan->steps[j].to_string()));
         }
     }
     o += "</table>\n";
@@ -377,6 +471,7 @@ std::string html_report(const ReportInput& in) {
     Pictures pictures;
     std::string body;
     body += header_section(in);
+    body += brief_section(in);
     body += goal_section(in.transfer->verdict);
     body += ontology_section(in, pictures);
     body += problem_section(in, pictures);

@@ -1,13 +1,15 @@
 #pragma once
 // An HTML report of a plan transfer, for a person: one self-contained page (inline CSS, SVG
 // pictures inlined, no scripts, nothing fetched from the network) with
+//   - "In brief": what the map sends each target object to and what it loses (explain.hpp);
 //   - the transfer's verdict (valid or not, and why), goal satisfaction with the unsatisfied
 //     statements (for the intended goal when the transfer was given one), and the kind of
 //     migration;
 //   - the two ontologies, the map's picture and its images in a table;
 //   - the source and target plans side by side, one row per step, with the bindings of each
 //     match (the target match is the source match carried through part names: that is why the
-//     target step is the analogue of the source step) and, folded in <details>, the states
+//     target step is the analogue of the source step), each target part bound with the reason
+//     it is the image of the source part (explain.hpp), and, folded in <details>, the states
 //     before and after the step on both sides;
 //   - efficiency figures when replanning was done.
 //

@@ -1,12 +1,15 @@
 // The HTML report of a small transfer: verdict, steps, inlined pictures, no network references,
 // escaped text and balanced tags.
 
+#include "catplan/report/explain.hpp"
 #include "catplan/report/report.hpp"
 #include "catplan/report/svg.hpp"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <memory>
 #include <set>
 
@@ -33,7 +36,8 @@ struct Stacks {
     AttrId color;
 };
 
-Stacks stacks() {
+// With `clear`, also an attribute isClear (like the case study's, which no map sees).
+Stacks stacks(bool clear = false) {
     auto s = std::make_shared<Schema>("Stacks");
     Stacks t;
     t.block = s->add_ob("Block");
@@ -42,6 +46,9 @@ Stacks stacks() {
     t.on_r = s->add_hom("on_r", t.on, t.block);
     t.color_type = s->add_attr_type("Color", ValueKind::String);
     t.color = s->add_attr("hasColor", t.block, t.color_type);
+    if (clear) {
+        s->add_attr("isClear", t.block, s->add_attr_type("Clear", ValueKind::Bool));
+    }
     t.s = s;
     return t;
 }
@@ -252,6 +259,7 @@ TEST(Report, ShowsTheVerdictStepsAndPictures) {
     EXPECT_FALSE(contains(h, "<!DOCTYPE svg"));
     EXPECT_TRUE(contains(h, "Q_BreadSliced"));                  // the map's query box
     EXPECT_TRUE(contains(h, "States before and after step 2")); // a <details> per step
+    EXPECT_TRUE(contains(h, "<tr id=\"step-2\">"));             // an anchor per step
     EXPECT_EQ(count(h, "<details"), count(h, "</details>"));
     EXPECT_EQ(unbalanced_tags(h), "");
     EXPECT_EQ(network_references(h), std::vector<std::string>{});
@@ -268,6 +276,84 @@ TEST(Report, BindingsOfTheCarriedPartsAreBoldAlsoWhenRenamed) {
         // Each step's three parameters, bold in both columns.
         EXPECT_GE(count(m.html, "<li class=\"shared\">"), 6 * m.t.steps.size());
     }
+}
+
+TEST(Explain, TheBriefNamesEachObjectsImageAndWhatIsLost) {
+    Stacks t = stacks(true);
+    SchemaMap f = kitchen_map(t);
+    MapSummary brief = summarize_map(f);
+    std::vector<std::string> objects;
+    for (const auto& line : brief.objects) {
+        objects.push_back(line.name + " ⇒ " + line.image);
+    }
+    EXPECT_EQ(objects, (std::vector<std::string>{
+                           "Item ⇒ Block",
+                           "BreadSliced ⇒ {block::Block | hasColor(block) == \"purple\"}",
+                           "InReceptacle ⇒ On",
+                       }));
+    EXPECT_EQ(lost_names(brief, schema::GeneratorKind::Attr), "isClear");
+    EXPECT_EQ(lost_names(brief, schema::GeneratorKind::AttrType), "Clear");
+    EXPECT_EQ(lost_names(brief, schema::GeneratorKind::Ob), "");
+    EXPECT_EQ(lost_names(brief, schema::GeneratorKind::Hom), "");
+    // The page's brief says the same.
+    EXPECT_TRUE(contains(Made().html, "<h2>In brief</h2>"));
+}
+
+TEST(Explain, EachBindingComesWithItsReason) {
+    Made m;
+    ASSERT_TRUE(m.t.verdict.valid()) << m.t.verdict.reason();
+    const auto& st = m.t.steps[0]; // move(A, B, C): A is purple, so also BreadSliced
+    auto reasons = binding_reasons(m.map, *m.fx.problem->domain->find_rule("move"),
+                                   *m.t.target_domain.domain->find_rule("move"), st,
+                                   m.t.source_states[0], m.t.target_states[0]);
+    auto has = [&](const std::string& r) {
+        return std::find(reasons.begin(), reasons.end(), r) != reasons.end();
+    };
+    EXPECT_TRUE(has("A ↦ BreadSliced A because hasColor(A) == \"purple\" and BreadSliced ⇒ "
+                    "{block::Block | hasColor(block) == \"purple\"}"))
+        << fmt::format("{}", fmt::join(reasons, "\n"));
+    EXPECT_TRUE(has("A ↦ Item A because Block A and Item ⇒ Block"))
+        << fmt::format("{}", fmt::join(reasons, "\n"));
+    // B is red: not BreadSliced, and no reason says it is.
+    for (const auto& r : reasons) {
+        EXPECT_FALSE(contains(r, "BreadSliced B")) << r;
+        EXPECT_FALSE(contains(r, "#")) << r; // no internal labels
+    }
+    EXPECT_TRUE(contains(m.html, escape_html(reasons.front())));
+}
+
+TEST(Explain, StatePicturesMarkWhatTheStepDeletesAndCreates) {
+    Made m;
+    ASSERT_TRUE(m.t.verdict.valid()) << m.t.verdict.reason();
+    const auto& st = m.t.steps[0]; // move(A, B, C): deletes On A B, creates On A C
+    const auto* rule = m.fx.problem->domain->find_rule("move");
+    StepMarks marks = step_marks(rule, m.t.target_domain.domain->find_rule("move"), st);
+    ASSERT_EQ(marks.source_after.size(), 1U);
+    const auto& created = marks.source_after[0];
+    EXPECT_EQ(created.ob, m.fx.t.on);
+    EXPECT_EQ(created.css_class, "created");
+    const ACSet& after = m.t.source_states[1];
+    EXPECT_EQ(after.subpart(m.fx.t.on_l, created.part), *after.find_part(m.fx.t.block, "A"));
+    EXPECT_EQ(after.subpart(m.fx.t.on_r, created.part), *after.find_part(m.fx.t.block, "C"));
+    // Drawn as a node (relation edges off), the created part's node carries the class.
+    dot::DotOptions nodes;
+    nodes.relation_edges = false;
+    std::string picture = dot::state_to_dot(after, "X1", nodes, marks.source_after);
+    std::string node = fmt::format("On_{} [", created.part + 1);
+    std::size_t at = picture.find(node);
+    ASSERT_NE(at, std::string::npos) << picture;
+    EXPECT_TRUE(contains(picture.substr(at, picture.find('\n', at) - at), "class=\"created\""))
+        << picture;
+    // The deleted On is marked in the state before, on both sides, and the target's created
+    // InReceptacle in the target's state after.
+    ASSERT_EQ(marks.source_before.size(), 1U);
+    EXPECT_EQ(marks.source_before[0].css_class, "deleted");
+    EXPECT_FALSE(marks.target_before.empty());
+    EXPECT_FALSE(marks.target_after.empty());
+    // On the page, as SVG classes (On is drawn as an edge there), with a legend.
+    EXPECT_GE(count(m.html, "class=\"edge created\""), 2 * m.t.steps.size());
+    EXPECT_GE(count(m.html, "class=\"edge deleted\""), 2 * m.t.steps.size());
+    EXPECT_TRUE(contains(m.html, "<span class=\"swatch created\">"));
 }
 
 TEST(Report, SvgIdsAreUniqueOnThePage) {

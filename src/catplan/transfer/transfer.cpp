@@ -322,8 +322,11 @@ private:
                 out_.verdict.divergences.push_back(std::move(*d));
             }
         }
+        st.source_comatch = *r_to_x;
         if (options_.follow_source) {
             follow_source();
+        } else {
+            st.target_comatch = *applied;
         }
         st.source_match = std::move(*m);
         st.target_match = std::move(matches[0]);
@@ -376,6 +379,7 @@ private:
         } else if (!repaired_step(i, c, st)) {
             return false;
         }
+        st.source_comatch = *r_to_x;
         if (options_.follow_source) {
             follow_source();
         }

@@ -107,10 +107,15 @@ struct StepTransfer {
     /// action that one corresponds to, or by a repair (several target steps, or none).
     enum class Kind { Generated, Corresponds, Repaired };
     Kind kind = Kind::Generated;
-    plan::Step source;           ///< as written in the source plan
-    plan::Step target;           ///< the migrated action with the target parts it binds
-    ACSetMorphism source_match;  ///< L -> X_{i-1}
-    ACSetMorphism target_match;  ///< Δ_F(L) -> Y_{i-1}
+    plan::Step source;          ///< as written in the source plan
+    plan::Step target;          ///< the migrated action with the target parts it binds
+    ACSetMorphism source_match; ///< L -> X_{i-1}
+    ACSetMorphism target_match; ///< Δ_F(L) -> Y_{i-1}
+    /// R -> X_i, where the step's result lands (what it created, for a report's pictures).
+    ACSetMorphism source_comatch;
+    /// Δ_F(R) -> Y_i for a generated step; empty otherwise, and with follow_source (Y_i is then
+    /// rebuilt as Δ_F(X_i), which the comatch does not land in).
+    ACSetMorphism target_comatch;
     std::string source_bindings; ///< "block ↦ E, underblock ↦ D, ..."
     std::string target_bindings; ///< the same for the target match
     /// Parameters of the source action that its migration lost (the map does not see them).
