@@ -404,7 +404,7 @@ bool is_batch(const TransferCommandArgs& a) {
 // What one plan of a batch gave.
 struct PlanResult {
     int rc = kOk;
-    nlohmann::json json;     // its report (json and jsonl)
+    std::string json;        // its report as one line of JSON (json and jsonl)
     std::string line;        // its report line (text)
     std::string target_plan; // with PDDL inputs: the target IPC plan
     std::string diagnostics; // what loading it printed
@@ -430,7 +430,8 @@ PlanResult transfer_one(const TransferCommandArgs& a, Session& s, TransferInputs
     if (!load_transfer_plan(s, in, path, diag)) {
         p.rc = kBadInput;
         p.diagnostics = diag.str();
-        p.json = {{"plan_file", path}, {"exit_code", p.rc}, {"errors", p.diagnostics}};
+        p.json = json::dump(
+            nlohmann::json{{"plan_file", path}, {"exit_code", p.rc}, {"errors", p.diagnostics}});
         p.line = fmt::format("{}: not read (exit 2): the errors are on stderr\n", path);
         return p;
     }
@@ -451,12 +452,13 @@ PlanResult transfer_one(const TransferCommandArgs& a, Session& s, TransferInputs
             rest.remove_prefix(end == std::string_view::npos ? rest.size() : end + 1);
         }
     } else {
-        p.json = json_report(a, in, r);
-        p.json["plan_file"] = path;
-        p.json["exit_code"] = p.rc;
+        nlohmann::json j = json_report(a, in, r);
+        j["plan_file"] = path;
+        j["exit_code"] = p.rc;
         if (in.pddl) {
-            p.json["target_ipc_plan"] = p.target_plan;
+            j["target_ipc_plan"] = p.target_plan;
         }
+        p.json = json::dump(j);
     }
     return p;
 }
@@ -502,13 +504,13 @@ std::string batch_report(const TransferCommandArgs& a, const std::vector<PlanRes
     if (a.format == "json") {
         nlohmann::json all = nlohmann::json::array();
         for (const auto& p : results) {
-            all.push_back(p.json);
+            all.push_back(nlohmann::json::parse(p.json));
         }
         return json::dump(all, 2) + "\n";
     }
     std::array<std::size_t, 3> count{}; // by exit code 0, 1, 2
     for (const auto& p : results) {
-        o += a.format == "jsonl" ? json::dump(p.json) + "\n" : p.line;
+        o += a.format == "jsonl" ? p.json + "\n" : p.line;
         ++count[static_cast<std::size_t>(std::min<int>(p.rc, kBadInput))];
     }
     if (a.format == "text") {

@@ -315,7 +315,7 @@ TEST(Parser, ALongOperatorChainCountsAsNesting) {
     // Parentheses around chains add up.
     std::string sum = "1";
     for (int i = 0; i < 10; ++i) {
-        sum = "(" + sum;
+        sum.insert(0, "(");
         for (int k = 0; k < 30; ++k) {
             sum += " + 1";
         }

@@ -291,7 +291,7 @@ std::string states_details(const ReportInput& in, std::size_t i, Pictures& pictu
          "state after)</p>\n";
     auto [source_rule, target_rule] = rules_of(in, i);
     StepMarks marks = step_marks(source_rule, target_rule, t.steps[i]);
-    auto state = [&](const acset::ACSet& x, std::string name, std::string caption,
+    auto state = [&](const acset::ACSet& x, const std::string& name, const std::string& caption,
                      const std::vector<dot::PartClass>& classes) {
         return pictures.figure(dot::state_to_dot(x, name, in.dot, classes), caption);
     };

@@ -648,7 +648,7 @@ std::string_view to_string(MigrationKind kind) {
     return kind == MigrationKind::Delta ? "delta" : "conjunctive";
 }
 
-MigratedDomain migrate_domain(const SchemaMap& f, const plan::Domain& d, std::string name) {
+MigratedDomain migrate_domain(const SchemaMap& f, const plan::Domain& d, const std::string& name) {
     auto domain = std::make_shared<plan::Domain>();
     domain->name = name.empty() ? fmt::format("{}_{}", d.name, f.target()->name()) : name;
     domain->schema = f.target();

@@ -72,7 +72,8 @@ struct MigratedDomain {
 
 /// Δ_F of every rule of d, on F's target schema; the domain is named `name` (or
 /// "<d.name>_<target schema>" when empty).
-MigratedDomain migrate_domain(const SchemaMap& f, const plan::Domain& d, std::string name = {});
+MigratedDomain migrate_domain(const SchemaMap& f, const plan::Domain& d,
+                              const std::string& name = {});
 
 struct TransferOptions {
     /// Keep every source state X_i and target state Y_i (for a trace or a report).
