@@ -149,9 +149,8 @@ int cmd_library_add(const LibraryArgs& a, std::ostream& out, std::ostream& err) 
     }
     std::vector<std::pair<std::string, plan::Plan>> plans;
     for (const auto& path : a.plans) {
-        auto f = s.sources.add_file(path);
+        auto f = read_input(s, path, err);
         if (!f) {
-            error(err, fmt::format("cannot read '{}'", path));
             return kBadInput;
         }
         auto p = plan::parse_plan(*f, s.sources, s.sink);

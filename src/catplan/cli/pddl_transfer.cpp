@@ -170,9 +170,8 @@ std::optional<TransferInputs> load_pddl_transfer_inputs(Session& s, const lang::
 }
 
 bool load_ipc_plan(Session& s, TransferInputs& in, const std::string& path, std::ostream& err) {
-    auto f = s.sources.add_file(path);
+    auto f = read_input(s, path, err);
     if (!f) {
-        error(err, fmt::format("cannot read '{}'", path));
         return false;
     }
     auto plan = pddl::parse_ipc_plan(*f, s.sources, s.sink);
