@@ -328,7 +328,7 @@ Outcome run_transfer(const TransferCommandArgs& a, const TransferInputs& in, std
 }
 
 // The exit code of one transferred plan: 0 valid (and, with PDDL inputs, checked), else 1.
-int plan_exit_code(const Outcome& r, int checked) {
+int transfer_exit_code(const Outcome& r, int checked) {
     return r.t.verdict.valid() && checked == kOk ? kOk : kNo;
 }
 
@@ -356,7 +356,7 @@ int cmd_transfer(const TransferCommandArgs& a, std::ostream& out, std::ostream& 
         outputs.push_back({text, a.output});
     }
     int rc = emit(outputs, out, err);
-    return rc != kOk ? rc : plan_exit_code(r, checked);
+    return rc != kOk ? rc : transfer_exit_code(r, checked);
 }
 
 // Many plans at once: every plan transferred on the same map and problem, one report line (or JSON
@@ -442,7 +442,7 @@ PlanResult transfer_one(const TransferCommandArgs& a, Session& s, TransferInputs
         std::vector<OutputText> none; // a batch takes no --problem-output
         checked = finish_pddl_transfer(in, a.in, r.t, p.target_plan, checks, none);
     }
-    p.rc = plan_exit_code(r, checked);
+    p.rc = transfer_exit_code(r, checked);
     p.diagnostics = diag.str();
     if (a.format == "text") {
         p.line = summary_line(path, in, r);
