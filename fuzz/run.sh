@@ -21,6 +21,11 @@ for h in $harnesses; do
         "$build/corpus/$h" "$build/fuzz-seeds/$h" >"$build/artifacts/$h.log" 2>&1; then
         echo "fuzz: $h FAILED; the end of its log ($build/artifacts/$h.log):"
         tail -n 40 "$build/artifacts/$h.log"
+        for f in "$build/artifacts/$h"/*; do
+            [ -f "$f" ] || continue
+            echo "fuzz: the input, $f (as a Python bytes literal):"
+            python3 -c 'import sys; print(repr(open(sys.argv[1], "rb").read()[:4096]))' "$f"
+        done
         status=1
     else
         grep -E "^stat::number_of_executed_units|^#[0-9]+.*DONE" "$build/artifacts/$h.log" | tail -n 2

@@ -424,16 +424,20 @@ void read_types(Parser& p, const SExpr& e, Domain& d) {
     for (const auto& t : list) {
         declared.push_back({t.name, t.type, t.range});
     }
+    // A domain may have several (:types ...) sections: the earlier ones' types are known here.
     for (const auto& t : list) {
-        bool known =
-            t.type == "object" || std::any_of(declared.begin(), declared.end(),
-                                              [&](const Type& x) { return x.name == t.type; });
+        bool known = d.find_type(t.type) != nullptr ||
+                     std::any_of(declared.begin(), declared.end(),
+                                 [&](const Type& x) { return x.name == t.type; });
         if (!known) {
             declared.push_back({t.type, "object", t.range});
         }
     }
     // Parents before children (a cycle is reported once).
-    std::unordered_set<std::string> placed = {"object"};
+    std::unordered_set<std::string> placed;
+    for (const auto& t : d.types) {
+        placed.insert(t.name);
+    }
     while (!declared.empty()) {
         auto it = std::find_if(declared.begin(), declared.end(),
                                [&](const Type& t) { return placed.count(t.parent) != 0; });

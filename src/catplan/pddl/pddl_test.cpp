@@ -363,6 +363,21 @@ TEST(PddlErrors, DuplicateParametersObjectsAndConstantsAreLocated) {
     EXPECT_NE(text.find("domain.pddl:1:43: note: first declared here"), std::string::npos) << text;
 }
 
+// Found by the fuzzer: a second (:types ...) section redeclared the first one's types.
+TEST(PddlParse, SeveralTypesSectionsMakeOneTree) {
+    auto l = load_text(R"((define (domain d) (:types a) (:types b - a c)
+  (:predicates (p ?x - b))))",
+                       "");
+    ASSERT_TRUE(l->import) << l->errors();
+    const auto& s = *l->import->domain->schema;
+    EXPECT_TRUE(s.find("a") && s.find("b") && s.find("c") && s.find("b_is_a"));
+    auto twice = load_text("(define (domain d) (:types a) (:types a))", "");
+    EXPECT_FALSE(twice->domain);
+    EXPECT_NE(twice->errors().find("domain.pddl:1:39: error: the type 'a' is declared twice"),
+              std::string::npos)
+        << twice->errors();
+}
+
 TEST(PddlParse, SkipsAByteOrderMarkAndEndsLinesAtCr) {
     auto l = load_text("\xEF\xBB\xBF; a comment\r(define (domain d) ; another\r"
                        "(:predicates (p)) (:action a :parameters () :precondition (p)\r"
