@@ -6,8 +6,8 @@
 // not with abort()'s signal, so that scripts see a documented code. It does not unwind: the state
 // is broken, and no destructor or output file should run on it. A unit test checks an assertion
 // with `EXPECT_EXIT(stmt, testing::ExitedWithCode(70), "assertion 'cond' failed")`.
-// The fuzz build (CATPLAN_ASSERT_ABORTS) aborts instead: libFuzzer keeps the input of a crash, not of
-// an exit.
+// The fuzz build (CATPLAN_ASSERT_ABORTS) aborts instead: libFuzzer keeps the input of a crash, not
+// of an exit.
 
 #include <cstdio>
 #include <cstdlib>
