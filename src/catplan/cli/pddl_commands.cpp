@@ -100,7 +100,7 @@ int cmd_pddl_import(const std::vector<std::string>& files, const std::string& ou
 }
 
 struct ExportArgs {
-    std::string file, domain, problem, map, output, problem_output;
+    std::string file, domain, problem, map, output, problem_output, plan, from_ipc;
 };
 
 /// The domain (and problem) carried along the map: Δ_F of every rule and state; nullopt with an
@@ -138,6 +138,44 @@ migrate_for_export(const lang::Module& m, const ExportArgs& a, const plan::Domai
         p = q;
     }
     return std::pair{plan::DomainPtr(d), p};
+}
+
+/// `pddl export --plan P`: P (a plan of the problem exported) in the export's terms, as an IPC
+/// plan; `--from-ipc F`: the export's IPC plan F as a catplan plan, validated on the problem
+/// exported (exit 1 when it is invalid there).
+int translate_plan(Session& s, const ExportArgs& a, const pddl::Exported& ex, std::ostream& out,
+                   std::ostream& err) {
+    auto f = read_input(s, a.plan.empty() ? a.from_ipc : a.plan, err);
+    if (!f) {
+        return kBadInput;
+    }
+    if (!a.plan.empty()) {
+        auto plan = plan::parse_plan(*f, s.sources, s.sink);
+        if (report(s, err) || !plan) {
+            return kBadInput;
+        }
+        auto ipc = pddl::to_exported_plan(ex, *plan);
+        if (!ipc) {
+            error(err, ipc.error());
+            return kNo;
+        }
+        return emit(pddl::write_ipc_plan(*ipc), a.output, out, err);
+    }
+    auto ipc = pddl::parse_ipc_plan(*f, s.sources, s.sink);
+    if (report(s, err) || !ipc) {
+        return kBadInput;
+    }
+    auto plan = pddl::from_exported_plan(ex, *ipc);
+    if (!plan) {
+        error(err, plan.error());
+        return kBadInput;
+    }
+    auto v = plan::validate_plan(*ex.source, *plan);
+    std::string text = plan->to_string();
+    text += v.valid ? "# valid on " + ex.source->name + ": goal reached\n"
+                    : "# invalid on " + ex.source->name + ": " + v.reason + "\n";
+    int rc = emit(text, a.output, out, err);
+    return rc != kOk ? rc : (v.valid ? kOk : kNo);
 }
 
 int cmd_pddl_export(const ExportArgs& a, std::ostream& out, std::ostream& err) {
@@ -179,25 +217,27 @@ int cmd_pddl_export(const ExportArgs& a, std::ostream& out, std::ostream& err) {
         }
         std::tie(domain, problem) = *migrated;
     }
-    auto dtext = pddl::export_domain(*domain);
-    if (!dtext) {
-        error(err, dtext.error());
+    if ((!a.plan.empty() || !a.from_ipc.empty()) && problem == nullptr) {
+        error(err, "--plan and --from-ipc need --problem");
+        return kBadInput;
+    }
+    auto ex = pddl::export_pddl(*domain, problem.get());
+    if (!ex) {
+        error(err, ex.error());
         return kUnsupported;
     }
-    std::string ptext;
-    if (problem != nullptr) {
-        auto p = pddl::export_problem(*problem);
-        if (!p) {
-            error(err, p.error());
-            return kUnsupported;
-        }
-        ptext = *p;
+    for (const auto& note : ex->notes) {
+        err << "catplan: note: " << note << "\n";
+    }
+    if (!a.plan.empty() || !a.from_ipc.empty()) {
+        return translate_plan(s, a, *ex, out, err);
     }
     if (!a.problem_output.empty()) {
         // Both files or neither (emit stages them together).
-        return emit({{*dtext, a.output}, {ptext, a.problem_output}}, out, err);
+        return emit({{ex->domain, a.output}, {ex->problem, a.problem_output}}, out, err);
     }
-    return emit(ptext.empty() ? *dtext : *dtext + "\n" + ptext, a.output, out, err);
+    return emit(ex->problem.empty() ? ex->domain : ex->domain + "\n" + ex->problem, a.output, out,
+                err);
 }
 
 /// " (file:line:col)" for a located step, "" otherwise.
@@ -349,6 +389,14 @@ void add_pddl_commands(CLI::App& app, CommandTable& table) {
                     "along it");
     exp->add_option("-o,--output", ea.output, "write the domain (and problem) to this file");
     exp->add_option("--problem-output", ea.problem_output, "write the problem to this file");
+    exp->add_option("--plan", ea.plan,
+                    "a plan of the problem: print it in the export's terms (an IPC plan) instead")
+        ->excludes(exp->get_option("--problem-output"));
+    exp->add_option("--from-ipc", ea.from_ipc,
+                    "an IPC plan of the export: print it as a plan of the problem, validated on "
+                    "it (exit 1 when invalid), instead")
+        ->excludes(exp->get_option("--problem-output"))
+        ->excludes(exp->get_option("--plan"));
     table.add(exp, [](std::ostream& o, std::ostream& e) { return cmd_pddl_export(ea, o, e); });
 }
 
