@@ -170,12 +170,16 @@ int translate_plan(Session& s, const ExportArgs& a, const pddl::Exported& ex, st
         error(err, plan.error());
         return kBadInput;
     }
+    // Checked with the matches the export expresses (replay_exported), and by catplan's
+    // validation, which may find a step of a migrated rule ambiguous.
+    auto r = pddl::replay_exported(ex, *plan);
     auto v = plan::validate_plan(*ex.source, *plan);
     std::string text = plan->to_string();
-    text += v.valid ? "# valid on " + ex.source->name + ": goal reached\n"
-                    : "# invalid on " + ex.source->name + ": " + v.reason + "\n";
+    text += r ? "# valid on " + ex.source->name + " with the export's matches: goal reached\n"
+              : "# invalid on " + ex.source->name + ": " + r.error() + "\n";
+    text += v.valid ? "# catplan validate: valid\n" : "# catplan validate: " + v.reason + "\n";
     int rc = emit(text, a.output, out, err);
-    return rc != kOk ? rc : (v.valid ? kOk : kNo);
+    return rc != kOk ? rc : (r ? kOk : kNo);
 }
 
 int cmd_pddl_export(const ExportArgs& a, std::ostream& out, std::ostream& err) {

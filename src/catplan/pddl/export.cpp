@@ -77,8 +77,29 @@ Result<std::string> Writer::atom(const ACSet& x, ObId ob, Part p,
         }
     }
     std::string pred = rd.fact_predicate[ob.index()];
+    for (AttrId a : s.attrs_from(ob)) {
+        const AttrReading& ar = rd.attrs[a.index()];
+        if (ar.use != AttrUse::Values) {
+            continue;
+        }
+        const auto& v = x.subpart(a, p);
+        if (!v.is_concrete()) {
+            return fail(fmt::format("not expressible: {}({}) is not a known value, and the fact's "
+                                    "value is part of its predicate",
+                                    s.attr(a).name, x.part_label(ob, p)));
+        }
+        pred += "_" + ar.value_predicate.at(v.to_string());
+    }
+    if (pred != rd.fact_predicate[ob.index()]) {
+        auto it = valued_facts.find(pred);
+        if (it == valued_facts.end()) {
+            valued_facts.emplace(pred, types);
+            preds.take(pred);
+        }
+        pred = valued_facts.find(pred)->first;
+    }
     if (!marker_homs.empty()) {
-        std::string key = fmt::format("{}|{}", ob.index(), fmt::join(marker_homs, "|"));
+        std::string key = fmt::format("{}|{}", pred, fmt::join(marker_homs, "|"));
         auto it = marker_facts.find(key);
         if (it == marker_facts.end()) {
             std::string want = fmt::format("{}_{}_marker", pred, fmt::join(marker_homs, "_"));
@@ -638,10 +659,23 @@ std::string Writer::write_predicates() const {
     const Schema& s = *rd.schema;
     std::string out;
     for (ObId ob : rd.facts) {
+        bool valued = std::any_of(s.attrs_from(ob).begin(), s.attrs_from(ob).end(), [&](AttrId a) {
+            return rd.attrs[a.index()].use == AttrUse::Values;
+        });
+        if (valued) {
+            continue; // its predicates are valued_facts
+        }
         out += "    (" + rd.fact_predicate[ob.index()];
         int i = 1;
         for (HomId h : s.homs_from(ob)) {
             out += fmt::format(" ?x{} - {}", i++, rd.arg_type(s.hom(h).codom));
+        }
+        out += ")\n";
+    }
+    for (const auto& [pred, types] : valued_facts) {
+        out += "    (" + pred;
+        for (std::size_t i = 0; i < types.size(); ++i) {
+            out += fmt::format(" ?x{} - {}", i + 1, types[i]);
         }
         out += ")\n";
     }
@@ -657,7 +691,9 @@ std::string Writer::write_predicates() const {
             out += fmt::format("    ({} ?x - {})\n", ar.predicate, type);
         }
         for (const auto& [v, pred] : ar.value_predicate) {
-            out += fmt::format("    ({} ?x - {})\n", pred, type);
+            if (rd.entity[s.attr(AttrId(a)).dom.index()]) {
+                out += fmt::format("    ({} ?x - {})\n", pred, type);
+            }
         }
     }
     for (const auto& [shape, pred] : marker_presence) {

@@ -40,6 +40,7 @@
 // the last step of every plan; from_exported_plan leaves it out.
 
 #include "catplan/base/result.hpp"
+#include "catplan/hom/morphism.hpp"
 #include "catplan/pddl/ipc_plan.hpp"
 #include "catplan/plan/domain.hpp"
 
@@ -82,6 +83,21 @@ Result<std::string> export_domain(const plan::Domain& domain);
 /// The problem as a PDDL problem file, or the reason it is not expressible. A pattern goal needs
 /// the domain exported with it (export_pddl): its action `reach-goal` is in the domain.
 Result<std::string> export_problem(const plan::Problem& problem);
+
+/// A plan of the exported problem replayed with the matches the export expresses.
+struct ExportedReplay {
+    plan::Plan plan;                         // one argument per rule parameter
+    std::vector<hom::ACSetMorphism> matches; // of each step
+    std::vector<acset::ACSet> states;        // X_0 .. X_n
+    hom::ACSetMorphism goal;                 // the goal's embedding in X_n
+};
+
+/// Replays a plan of the exported problem, each step with the match the export expresses (its
+/// kept things sent to objects, its deleted things to markers; a step of a migrated rule may name
+/// each parameter once, as a transfer prints it), and embeds the goal; fails with the step and
+/// the reason. Where catplan's validation finds a step ambiguous (a migrated rule's marker part
+/// could also delete a part of an object), this picks the match the export expresses.
+Result<ExportedReplay> replay_exported(const Exported& exported, const plan::Plan& plan);
 
 /// A plan of the exported problem in the export's terms (objects named as the export names them,
 /// `reach-goal` last when the goal is a pattern); fails when the plan is invalid or a step binds

@@ -4,6 +4,7 @@
 #include "catplan/pddl/detail/export_writer.hpp"
 #include "catplan/pddl/export.hpp"
 #include "catplan/plan/validate.hpp"
+#include "catplan/rewrite/dpo.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -65,19 +66,124 @@ const Exported::Action* find_action(const Exported& ex, std::string_view name) {
     return nullptr;
 }
 
+/// The plan with each step's arguments per parameter: a step of a migrated rule may name each
+/// parameter name once (as a transfer prints it: `unstack(E, D)` for the rule's parameters block,
+/// block, underblock, underblock, one per target object).
+plan::Plan per_parameter(const plan::Domain& d, plan::Plan plan) {
+    for (auto& step : plan.steps) {
+        const auto* rule = d.find_rule(step.action);
+        if (rule == nullptr || step.args.size() == rule->parameters.size()) {
+            continue;
+        }
+        std::vector<std::string> names;
+        for (const auto& p : rule->parameters) {
+            if (std::find(names.begin(), names.end(), p.name) == names.end()) {
+                names.push_back(p.name);
+            }
+        }
+        if (names.size() != step.args.size()) {
+            continue; // validation says what is wrong
+        }
+        std::vector<std::string> args;
+        for (const auto& p : rule->parameters) {
+            args.push_back(step.args[static_cast<std::size_t>(
+                std::find(names.begin(), names.end(), p.name) - names.begin())]);
+        }
+        step.args = std::move(args);
+        step.arg_ranges.clear();
+    }
+    return plan;
+}
+
 } // namespace
 
-Result<IpcPlan> to_exported_plan(const Exported& ex, const plan::Plan& plan) {
+namespace {
+
+/// Whether m sends L's kept things to objects and its deleted things to markers: the matches the
+/// export expresses.
+bool expressed(const detail::Writer& w, const rewrite::Rule& rule, const acset::ACSet& x,
+               const Things& xt, const hom::ACSetMorphism& m) {
+    NameSet scratch;
+    auto L = detail::find_things(w.rd, rule.L, {}, scratch, rule.name);
+    if (!L) {
+        return false;
+    }
+    for (const auto& t : L->things) {
+        bool deleted =
+            std::find(rule.l.components[t.first.index()].begin(),
+                      rule.l.components[t.first.index()].end(),
+                      t.part[t.first.index()]) == rule.l.components[t.first.index()].end();
+        const auto& image = xt.things[xt.at(t.first, m(t.first, t.part[t.first.index()]))];
+        if (image.marker != deleted) {
+            return false;
+        }
+    }
+    (void)x;
+    return true;
+}
+
+} // namespace
+
+Result<ExportedReplay> replay_exported(const Exported& ex, const plan::Plan& given) {
     auto w = writer_for(ex);
     if (!w) {
         return fail(w.error());
     }
-    plan::ValidateOptions options;
-    options.keep_states = true;
-    auto v = plan::validate_plan(*ex.source, plan, options);
-    if (!v.valid) {
-        return fail(v.reason);
+    plan::Plan plan = per_parameter(*ex.domain_ptr, given);
+    ExportedReplay out;
+    acset::ACSet x = *ex.source->initial;
+    for (std::size_t i = 0; i < plan.steps.size(); ++i) {
+        const auto& step = plan.steps[i];
+        std::string where = fmt::format("step {} {}", i + 1, step.to_string());
+        const auto* rule = ex.domain_ptr->find_rule(step.action);
+        if (rule == nullptr || step.args.size() != rule->parameters.size()) {
+            return fail(fmt::format(
+                "{}: {}", where, rule == nullptr ? "no such action" : "wrong number of arguments"));
+        }
+        rewrite::MatchOptions opt;
+        for (std::size_t j = 0; j < step.args.size(); ++j) {
+            const auto& p = rule->parameters[j];
+            auto part = x.find_part(p.ob, step.args[j]);
+            if (!part) {
+                return fail(fmt::format("{}: no {} named '{}'", where, x.schema().ob(p.ob).name,
+                                        step.args[j]));
+            }
+            opt.initial.push_back({p.ob, p.part, *part});
+        }
+        NameSet names;
+        auto xt = detail::find_things((*w)->rd, x, (*w)->marker_shapes, names, where);
+        if (!xt) {
+            return fail(xt.error());
+        }
+        auto matches = rewrite::find_matches(*rule, x, opt);
+        std::erase_if(matches, [&](const auto& m) { return !expressed(**w, *rule, x, *xt, m); });
+        if (matches.empty()) {
+            return fail(fmt::format("{}: no match that the export expresses", where));
+        }
+        out.states.push_back(x);
+        auto applied = rewrite::rewrite_in_place(*rule, x, matches[0]);
+        if (!applied) {
+            return fail(fmt::format("{}: {}", where, applied.error()));
+        }
+        out.matches.push_back(std::move(matches[0]));
+        out.plan.steps.push_back(step);
     }
+    auto g = plan::embed_goal(*ex.source->goal, x);
+    if (!g) {
+        return fail(fmt::format("goal not reached: {}", g.error()));
+    }
+    out.goal = std::move(*g);
+    out.states.push_back(std::move(x));
+    return out;
+}
+
+Result<IpcPlan> to_exported_plan(const Exported& ex, const plan::Plan& given) {
+    auto w = writer_for(ex);
+    auto r = replay_exported(ex, given);
+    if (!w || !r) {
+        return fail(w ? r.error() : w.error());
+    }
+    const plan::Plan& plan = r->plan;
     IpcPlan out;
     for (std::size_t i = 0; i < plan.steps.size(); ++i) {
         const auto& step = plan.steps[i];
@@ -89,7 +195,7 @@ Result<IpcPlan> to_exported_plan(const Exported& ex, const plan::Plan& plan) {
         }
         IpcStep s{lowered(a->name), {}, {}};
         for (auto [ob, p] : a->params) {
-            auto name = object_name(**w, v.states[i], ob, v.matches[i](ob, p),
+            auto name = object_name(**w, r->states[i], ob, r->matches[i](ob, p),
                                     fmt::format("step {} {}", i + 1, step.to_string()));
             if (!name) {
                 return fail(name.error());
@@ -99,13 +205,9 @@ Result<IpcPlan> to_exported_plan(const Exported& ex, const plan::Plan& plan) {
         out.push_back(std::move(s));
     }
     if (!ex.goal_action.empty()) {
-        auto g = plan::embed_goal(*ex.source->goal, *v.final_state);
-        if (!g) {
-            return fail(g.error());
-        }
         IpcStep s{lowered(ex.goal_action), {}, {}};
         for (auto [ob, p] : ex.goal_params) {
-            auto name = object_name(**w, *v.final_state, ob, (*g)(ob, p), "the goal");
+            auto name = object_name(**w, r->states.back(), ob, r->goal(ob, p), "the goal");
             if (!name) {
                 return fail(name.error());
             }

@@ -221,8 +221,8 @@ void add_notes(Writer& w) {
         w.notes.push_back(fmt::format(
             "The {} marker (a thing that rules create and delete whole; unnamed in a state) is no "
             "PDDL object: ({}) says that it exists, and a fact that refers to it leaves that "
-            "argument out{}{}. Not expressed: a step that binds a rule's kept part to it, or "
-            "that would make a second {} marker.",
+            "argument out{}{}. Not expressed: a step that binds a rule's kept part to it, that "
+            "deletes a part of an object in its place, or that would make a second {} marker.",
             shape, pred, facts.empty() ? "" : ": ", fmt::join(facts, ", "), shape));
     }
     if (w.creates_facts_not_sets) {

@@ -134,7 +134,7 @@ void read_attrs(Reading& r, const plan::Domain& d, const plan::Problem* p, NameS
         const auto& info = s.attr(a);
         const auto& type = s.attr_type(info.codom);
         AttrReading& ar = r.attrs[i];
-        if (type.kind == schema::ValueKind::Bool) {
+        if (type.kind == schema::ValueKind::Bool && r.entity[info.dom.index()]) {
             ar.use = AttrUse::Bool;
             ar.predicate = names.take(pddl_name(info.name, "p"));
             continue;
@@ -168,7 +168,11 @@ void read_attrs(Reading& r, const plan::Domain& d, const plan::Problem* p, NameS
         ar.use = AttrUse::Values;
         for (const auto& v : values) {
             std::string text = v.size() >= 2 && v.front() == '"' ? v.substr(1, v.size() - 2) : v;
-            ar.value_predicate[v] = names.take(pddl_name(info.name + "_" + text, "p"));
+            // A fact's value is part of its predicate's name (export_writer.hpp), else its own
+            // unary predicate.
+            ar.value_predicate[v] = r.entity[info.dom.index()]
+                                        ? names.take(pddl_name(info.name + "_" + text, "p"))
+                                        : pddl_name(text, "v");
         }
     }
 }
@@ -186,7 +190,21 @@ Result<Reading> read_schema(const plan::Domain& domain, const plan::Problem* pro
         r.entity[s.hom(HomId(f)).codom.index()] = true;
     }
     for (std::uint32_t a = 0; a < s.num_attrs(); ++a) {
-        r.entity[s.attr(AttrId(a)).dom.index()] = true;
+        ObId ob = s.attr(AttrId(a)).dom;
+        // An object that nothing points into and that points somewhere is a fact with attribute
+        // values when it points to one thing (the sandwich kitchen's BreadSliced, the slides'
+        // IsClear: a unary predicate) or when a rule creates or deletes its parts on their own;
+        // else a part of the things it points to (the Kitchenworld's BreadSliced, an Object and
+        // a Receptacle). The importer's types, which carry a Name attribute, stay types.
+        bool named_type =
+            std::any_of(s.attrs_from(ob).begin(), s.attrs_from(ob).end(),
+                        [&](AttrId x) { return s.attr_type(s.attr(x).codom).name == "Name"; });
+        bool changed = std::any_of(domain.rules.begin(), domain.rules.end(), [&](const auto& rule) {
+            return !rule->created_parts(ob).empty() || !rule->deleted_parts(ob).empty();
+        });
+        bool fact = s.homs_into(ob).empty() && !s.homs_from(ob).empty() &&
+                    ((s.homs_from(ob).size() == 1 && !named_type) || changed);
+        r.entity[ob.index()] = r.entity[ob.index()] || !fact;
     }
     find_components(r);
     r.type_of_ob.resize(s.num_obs());

@@ -61,7 +61,9 @@ public:
     std::set<std::string> marker_shapes;
     std::map<std::string, std::string> marker_presence; // shape -> predicate
     std::map<std::string, MarkerFact> marker_facts;     // key -> predicate
-    std::string goal_action, goal_predicate;            // when the goal is a pattern
+    /// Facts with attribute values: `(IsClear_true ?x)`, by predicate: argument types.
+    std::map<std::string, std::vector<std::string>> valued_facts;
+    std::string goal_action, goal_predicate; // when the goal is a pattern
     std::vector<std::string> notes;
     bool creates_facts_not_sets = false;
 
