@@ -4,6 +4,7 @@
 #include "catplan/cli/commands.hpp"
 #include "catplan/cli/common.hpp"
 #include "catplan/cli/json_output.hpp"
+#include "catplan/cli/pddl_export.hpp"
 #include "catplan/cli/plan_commands.hpp"
 #include "catplan/migrate/migration.hpp"
 #include "catplan/pddl/export.hpp"
@@ -103,8 +104,8 @@ struct ExportArgs {
     std::string file, domain, problem, map, output, problem_output, plan, from_ipc;
 };
 
-/// The domain (and problem) carried along the map: Δ_F of every rule and state; nullopt with an
-/// error printed when the map does not fit or a rule cannot be migrated.
+/// The domain (and problem) carried along the map declared in the module; nullopt with an error
+/// printed when the map does not fit or a rule cannot be migrated.
 std::optional<std::pair<plan::DomainPtr, plan::ProblemPtr>>
 migrate_for_export(const lang::Module& m, const ExportArgs& a, const plan::DomainPtr& domain,
                    const plan::ProblemPtr& problem, std::ostream& err) {
@@ -112,32 +113,12 @@ migrate_for_export(const lang::Module& m, const ExportArgs& a, const plan::Domai
     if (decl == nullptr) {
         return std::nullopt;
     }
-    const migrate::SchemaMap& f = *decl->map;
-    if (domain->schema != f.source()) {
-        error(err, fmt::format("domain '{}' is on schema {}, but map '{}' migrates {}",
-                               domain->name, domain->schema->name(), a.map, f.source()->name()));
+    auto migrated = migrate_along(*decl->map, domain, problem);
+    if (!migrated) {
+        error(err, migrated.error());
         return std::nullopt;
     }
-    auto d = std::make_shared<plan::Domain>();
-    d->name = domain->name + "_" + f.target()->name();
-    d->schema = f.target();
-    for (const auto& rule : domain->rules) {
-        auto migrated = migrate::migrate(f, *rule);
-        if (!migrated) {
-            error(err, fmt::format("{} cannot be migrated: {}", rule->name, migrated.error()));
-            return std::nullopt;
-        }
-        d->rules.push_back(std::make_shared<rewrite::Rule>(std::move(*migrated)));
-    }
-    plan::ProblemPtr p;
-    if (problem != nullptr) {
-        auto q = std::make_shared<plan::Problem>(*problem);
-        q->domain = d;
-        q->initial = std::make_shared<acset::ACSet>(migrate::migrate(f, *problem->initial));
-        q->goal = std::make_shared<acset::ACSet>(migrate::migrate(f, *problem->goal));
-        p = q;
-    }
-    return std::pair{plan::DomainPtr(d), p};
+    return *migrated;
 }
 
 /// `pddl export --plan P`: P (a plan of the problem exported) in the export's terms, as an IPC
@@ -275,6 +256,34 @@ nlohmann::json ipc_validation_json(const Session& s, const pddl::Import& im,
 }
 
 } // namespace
+
+Result<std::pair<plan::DomainPtr, plan::ProblemPtr>>
+migrate_along(const migrate::SchemaMap& f, const plan::DomainPtr& domain,
+              const plan::ProblemPtr& problem) {
+    if (domain->schema != f.source()) {
+        return fail(fmt::format("domain '{}' is on schema {}, but the map migrates {}",
+                                domain->name, domain->schema->name(), f.source()->name()));
+    }
+    auto d = std::make_shared<plan::Domain>();
+    d->name = domain->name + "_" + f.target()->name();
+    d->schema = f.target();
+    for (const auto& rule : domain->rules) {
+        auto migrated = migrate::migrate(f, *rule);
+        if (!migrated) {
+            return fail(fmt::format("{} cannot be migrated: {}", rule->name, migrated.error()));
+        }
+        d->rules.push_back(std::make_shared<rewrite::Rule>(std::move(*migrated)));
+    }
+    plan::ProblemPtr p;
+    if (problem != nullptr) {
+        auto q = std::make_shared<plan::Problem>(*problem);
+        q->domain = d;
+        q->initial = std::make_shared<acset::ACSet>(migrate::migrate(f, *problem->initial));
+        q->goal = std::make_shared<acset::ACSet>(migrate::migrate(f, *problem->goal));
+        p = q;
+    }
+    return std::pair{plan::DomainPtr(d), p};
+}
 
 bool is_pddl_input(const std::vector<std::string>& files) {
     return std::any_of(files.begin(), files.end(), [](const std::string& f) {

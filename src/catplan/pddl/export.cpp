@@ -233,6 +233,17 @@ Result<RuleThings> rule_things(const Reading& rd, const rewrite::Rule& rule, Nam
     return rt;
 }
 
+/// The attributes of the thing's parts.
+std::vector<AttrId> attrs_of(const ACSet& x, const Thing& t) {
+    std::vector<AttrId> out;
+    for (std::uint32_t i = 0; i < x.schema().num_attrs(); ++i) {
+        if (t.part[x.schema().attr(AttrId(i)).dom.index()] != kNoPart) {
+            out.emplace_back(i);
+        }
+    }
+    return out;
+}
+
 /// Fails when a marker thing's attributes are read (a deleted marker must match any marker).
 Result<bool> check_marker_attrs(const ACSet& x, const Thing& t, const std::string& rule) {
     const Schema& s = x.schema();
@@ -440,6 +451,16 @@ Result<bool> Writer::rule_things_conditions(const rewrite::Rule& rule, const Rul
     for (std::size_t i = 0; i < rt.R.things.size(); ++i) {
         const Thing& t = rt.R.things[i];
         if (rt.r_to_l[i] == kNone) {
+            for (AttrId at : attrs_of(rule.R, t)) {
+                if (rule.R.subpart(at, t.part[rule.R.schema().attr(at).dom.index()])
+                        .is_concrete()) {
+                    return fail(
+                        fmt::format("not expressible: {} creates a {} with a known {} (a new "
+                                    "object, which PDDL cannot make; only a marker, whose "
+                                    "values are unknown, is expressed)",
+                                    rule.name, t.shape, rule.R.schema().attr(at).name));
+                }
+            }
             if (!created.insert(t.shape).second) {
                 return fail(fmt::format("not expressible: {} creates two {} things (at most one "
                                         "marker of a shape)",
