@@ -101,8 +101,8 @@ namespace {
 
 /// Whether m sends L's kept things to objects and its deleted things to markers: the matches the
 /// export expresses.
-bool expressed(const detail::Writer& w, const rewrite::Rule& rule, const acset::ACSet& x,
-               const Things& xt, const hom::ACSetMorphism& m) {
+bool expressed(const detail::Writer& w, const rewrite::Rule& rule, const Things& xt,
+               const hom::ACSetMorphism& m) {
     NameSet scratch;
     auto L = detail::find_things(w.rd, rule.L, {}, scratch, rule.name);
     if (!L) {
@@ -118,7 +118,6 @@ bool expressed(const detail::Writer& w, const rewrite::Rule& rule, const acset::
             return false;
         }
     }
-    (void)x;
     return true;
 }
 
@@ -156,7 +155,7 @@ Result<ExportedReplay> replay_exported(const Exported& ex, const plan::Plan& giv
             return fail(xt.error());
         }
         auto matches = rewrite::find_matches(*rule, x, opt);
-        std::erase_if(matches, [&](const auto& m) { return !expressed(**w, *rule, x, *xt, m); });
+        std::erase_if(matches, [&](const auto& m) { return !expressed(**w, *rule, *xt, m); });
         if (matches.empty()) {
             return fail(fmt::format("{}: no match that the export expresses", where));
         }

@@ -214,14 +214,11 @@ Result<Reading> read_schema(const plan::Domain& domain, const plan::Problem* pro
     types.take("object");
     for (auto& c : r.components) {
         if (!c.forest) {
-            std::vector<std::string> roots;
+            std::vector<std::string> roots; // the objects without an is-a hom
             for (ObId ob : c.obs) {
-                if (!r.parent[ob.index()] || !c.forest) {
-                    bool root = std::none_of(s.homs_from(ob).begin(), s.homs_from(ob).end(),
-                                             [&](HomId f) { return r.is_a(f); });
-                    if (root) {
-                        roots.push_back(pddl_name(s.ob(ob).name, "t"));
-                    }
+                if (std::none_of(s.homs_from(ob).begin(), s.homs_from(ob).end(),
+                                 [&](HomId f) { return r.is_a(f); })) {
+                    roots.push_back(pddl_name(s.ob(ob).name, "t"));
                 }
             }
             c.type_name = types.take(fmt::format("{}", fmt::join(roots, "_or_")));
