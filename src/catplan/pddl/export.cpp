@@ -332,7 +332,9 @@ Result<ActionText> Writer::read_rule(const rewrite::Rule& rule) {
         a.param_things.push_back(i);
     };
     for (const auto& p : rule.parameters) {
-        add_param(L.at(p.ob, p.part));
+        if (L.at(p.ob, p.part) != Things::kNoThing) { // a fact parameter is in the precondition
+            add_param(L.at(p.ob, p.part));
+        }
     }
     for (std::size_t i = 0; i < L.things.size(); ++i) {
         add_param(i);

@@ -261,6 +261,11 @@ Result<plan::Plan> from_exported_plan(const Exported& ex, const IpcPlan& plan) {
         plan::Step step{a->rule->name, {}, {}};
         for (const auto& param : a->rule->parameters) {
             std::size_t thing = L->at(param.ob, param.part);
+            if (thing == Things::kNoThing) {
+                return fail(fmt::format("step {} {}: the parameter {} is a fact, which the export "
+                                        "does not name",
+                                        i + 1, s.to_string(), param.name));
+            }
             std::optional<std::size_t> index;
             for (std::size_t j = 0; j < a->params.size(); ++j) {
                 if (L->at(a->params[j].first, a->params[j].second) == thing) {

@@ -166,13 +166,14 @@ void read_attrs(Reading& r, const plan::Domain& d, const plan::Problem* p, NameS
             collect_values(*p->goal, a, values);
         }
         ar.use = AttrUse::Values;
+        NameSet fact_values; // distinct values, distinct names
         for (const auto& v : values) {
             std::string text = v.size() >= 2 && v.front() == '"' ? v.substr(1, v.size() - 2) : v;
             // A fact's value is part of its predicate's name (export_writer.hpp), else its own
             // unary predicate.
             ar.value_predicate[v] = r.entity[info.dom.index()]
                                         ? names.take(pddl_name(info.name + "_" + text, "p"))
-                                        : pddl_name(text, "v");
+                                        : fact_values.take(pddl_name(text, "v"));
         }
     }
 }

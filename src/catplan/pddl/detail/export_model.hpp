@@ -101,7 +101,12 @@ struct Things {
     /// By object, by part: the thing it belongs to.
     std::vector<std::vector<std::size_t>> of;
 
-    std::size_t at(ObId ob, Part p) const { return of[ob.index()][p]; }
+    /// The thing part p of ob belongs to, or kNoThing for a part of a fact object.
+    std::size_t at(ObId ob, Part p) const {
+        return p < of[ob.index()].size() ? of[ob.index()][p] : kNoThing;
+    }
+
+    static constexpr std::size_t kNoThing = static_cast<std::size_t>(-1);
 };
 
 /// The things of x: fails when a thing has two parts of one object or (in a forest component) is
