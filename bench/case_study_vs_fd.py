@@ -9,7 +9,8 @@ Each run, one process at a time:
      with --format json --no-timing, to read the target plan);
   2. `catplan pddl export ... --map ColorToKitchen --problem CaseStudy -o d --problem-output p`:
      the target domain and problem Δ_F(I), Δ_F(G) as PDDL;
-  3. Fast Downward lama-first on d and p (whole process, and its own "Search time").
+  3. Fast Downward lama-first on d and p (whole process, and its own "Search time");
+  4. `catplan plan d p` (catplan's own planner on the same files, whole process).
 Then, once: the transferred plan carried to the export (`pddl export --plan`) and FD's plan are
 checked by VAL on d and p, and FD's plan is read back as a catplan plan (`pddl export --from-ipc`,
 which checks it on the migrated problem). Prints medians, their ratios and the plan lengths.
@@ -54,7 +55,7 @@ def main():
     out = pathlib.Path(a.out).resolve()
     out.mkdir(parents=True, exist_ok=True)
     d, p = out / "target-domain.pddl", out / "target-problem.pddl"
-    t_transfer, t_export, t_fd, t_search = [], [], [], []
+    t_transfer, t_export, t_fd, t_search, t_cp = [], [], [], [], []
     target_plan = fd_plan = None
     for _ in range(a.runs):
         t, r = timed([catplan, "transfer", MAP, "--plan", PLAN, "--format", "json",
@@ -76,6 +77,11 @@ def main():
         t_fd.append(t)
         t_search.append(float(re.search(r"Search time: ([0-9.]+)s", r.stdout).group(1)))
         fd_plan = (out / "sas_plan").read_text()
+        t, r = timed([catplan, "plan", str(d), str(p)])
+        if r.returncode != 0:
+            sys.exit(f"catplan plan failed: {r.stderr}")
+        t_cp.append(t)
+        cp_steps = len(steps(r.stdout)) - 1
     (out / "target.plan").write_text("\n".join(target_plan) + "\n")
     (out / "fd.plan").write_text(fd_plan)
     r = subprocess.run([catplan, "pddl", "export", MAP] + TARGET +
@@ -97,6 +103,8 @@ def main():
     print(f"export of the target (whole process): median {med(t_export):.3f} s")
     print(f"Fast Downward lama-first (whole process): median {med(t_fd):.3f} s, "
           f"search {med(t_search):.4f} s")
+    print(f"catplan plan on the export (whole process): median {med(t_cp):.3f} s, "
+          f"{cp_steps} steps (+ reach-goal)")
     print(f"replanning / transfer: {med(t_fd) / med(t_transfer):.2f}; "
           f"(export + replanning) / transfer: {(med(t_export) + med(t_fd)) / med(t_transfer):.2f}")
     print(f"plan lengths: transferred {len(target_plan)}, Fast Downward {fd_steps} "

@@ -289,6 +289,10 @@ Result<bool> describe(const Reading& rd, const ACSet& x, Thing& t, std::string_v
         }
     }
     t.shape = fmt::format("{}", fmt::join(obs, "+"));
+    if (bottoms.empty()) {
+        return fail(fmt::format("not expressible: in {}, the is-a homs of a {} form a cycle", what,
+                                t.shape));
+    }
     if (rd.components[t.component].forest && bottoms.size() != 1) {
         return fail(fmt::format("not expressible: in {}, the parts {} of one thing are not a chain "
                                 "of is-a homs (PDDL types form a tree)",
