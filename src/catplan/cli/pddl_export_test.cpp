@@ -215,5 +215,99 @@ TEST(PddlExport, TheCaseStudyTargetHasOneThingPerBlockAndTheMarkerAsFacts) {
     EXPECT_NE(r.error().find("goal not reached"), std::string::npos) << r.error();
 }
 
+/// The export of problem P of a language text, or its error.
+std::string export_error(const std::string& text) {
+    SourceManager sources;
+    DiagnosticSink sink(sources);
+    auto m = lang::load_source("t.cp", text, sources, sink);
+    EXPECT_FALSE(sink.has_errors()) << sink.render();
+    const auto* p = m.find("P");
+    if (p == nullptr || p->problem == nullptr) {
+        return "no problem P";
+    }
+    auto ex = pddl::export_pddl(*p->problem->domain, p->problem.get());
+    return ex ? "exported" : ex.error();
+}
+
+const char* kSchema = R"(
+@present S(FreeSchema) begin
+  (Block, Hand, On)::Ob
+  holds::Hom(Hand, Block)
+  (on_l, on_r)::Hom(On, Block)
+  Clear::AttrType(Bool)
+  isClear::Attr(Block, Clear)
+end
+)";
+
+TEST(PddlExport, WhatCannotBeExpressedIsRefusedWithTheReason) {
+    // A rule that deletes a block that facts with other arguments may refer to: STRIPS cannot ask
+    // that no (On x marker) holds.
+    std::string rules = R"(
+@domain D(S) begin
+  @rule drop(h, base) begin
+    Pre => begin
+      h::Hand
+      (b, base)::Block
+      holds(h) == b
+    end
+    Keep => begin
+      h::Hand
+      base::Block
+    end
+    Eff => begin
+      h::Hand
+      (c, base)::Block
+      holds(h) == c
+      o::On
+      on_l(o) == c; on_r(o) == base
+    end
+  end
+end
+)";
+    std::string problem = R"(
+@acset_colim I(S) begin
+  h::Hand
+  (A, B)::Block
+  isClear(A) == true
+  holds(h) == B
+end
+@acset_colim G(S) begin
+  x::Block
+  isClear(x) == true
+end
+@problem P(D) begin
+  initial = I
+  goal = G
+end
+)";
+    EXPECT_EQ(export_error(kSchema + rules + problem),
+              "not expressible: drop deletes the Block marker, which facts (On_on_l_marker ...) "
+              "may refer to; STRIPS cannot ask that none does");
+    // Read as false, B's unknown isClear would be false in PDDL's closed world.
+    std::string negative = problem;
+    negative.replace(negative.find("isClear(x) == true"), 18, "isClear(x) == false");
+    std::string keep = R"(
+@domain D(S) begin
+  @rule wait(b) begin
+    Pre => begin
+      b::Block
+    end
+    Keep => begin
+      b::Block
+    end
+    Eff => begin
+      b::Block
+    end
+  end
+end
+)";
+    std::string named = negative;
+    named.replace(named.find("(A, B)::Block"), 13, "(A, B)::Block; isClear(B) == true");
+    EXPECT_EQ(export_error(kSchema + keep + named), "exported");
+    EXPECT_EQ(export_error(kSchema + keep + negative),
+              "not expressible: isClear(B) is unknown in the initial state, and PDDL would read "
+              "it as false");
+}
+
 } // namespace
 } // namespace catplan::cli

@@ -64,8 +64,9 @@ Result<std::string> Writer::atom(const ACSet& x, ObId ob, Part p,
     for (HomId h : s.homs_from(ob)) {
         Part q = x.subpart(h, p);
         if (q == kNoPart) {
-            return fail(fmt::format("not expressible: {}({}) is unset", s.hom(h).name,
-                                    x.part_label(ob, p)));
+            return fail(
+                fmt::format("not expressible: {}({}) is left open (a fact names its arguments)",
+                            s.hom(h).name, x.part_label(ob, p)));
         }
         TermText t = term(s.hom(h).codom, q);
         if (t.text.empty()) {
