@@ -31,7 +31,9 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cd "$root"
 
-# name | file | export options | a catplan plan of the (migrated) problem, or -
+# name | file | export options | a catplan plan of the problem (after --map, the source's plan:
+# a migrated rule keeps its name and its parameters' names), `transfer` for the case study's
+# transferred target plan, or -
 cases=(
 "casestudy|examples/colorblocksworld/colorblocksworld.cp|--problem CaseStudy|examples/colorblocksworld/paper.plan"
 "slides|examples/colorblocksworld/slides.cp|--problem SlidesCaseStudy|examples/colorblocksworld/paper.plan"
@@ -40,15 +42,18 @@ cases=(
 "lights|tests/pddl/lights.cp|--problem LightsProblem|-"
 "lights>rooms|tests/pddl/lights.cp|--problem LightsProblem --map LightsToRooms|-"
 "casestudy>kitchen|examples/colorblocks_to_kitchen/appendix_map.cp|--problem CaseStudy --map ColorToKitchen|transfer"
-"slides>kitchen|examples/colorblocks_to_kitchen/slides_map.cp|--problem SlidesCaseStudy --map ColorToKitchen|-"
-"casestudy>swapped|examples/colorblocks_to_kitchen/swapped_map.cp|--problem CaseStudy --map SwappedToKitchen|-"
-"casestudy>plain|examples/colorblocks_to_blocks/forget_colors.cp|--problem CaseStudy --map ForgetColors|-"
-"hanoi>blocks|examples/hanoi_to_blocks/hanoi_to_blocks.cp|--problem ThreeDiscs --map HanoiToBlocks|-"
-"sandwich>color|examples/kitchen_to_colorblocks/kitchen_to_color.cp|--problem MakeSandwich --map KitchenToColor|-"
-"casestudy>warehouse|examples/kitchen_to_warehouse/kitchen_to_warehouse.cp|--problem CaseStudy --map ColorToWarehouse|-"
+"slides>kitchen|examples/colorblocks_to_kitchen/slides_map.cp|--problem SlidesCaseStudy --map ColorToKitchen|examples/colorblocksworld/paper.plan"
+"casestudy>swapped|examples/colorblocks_to_kitchen/swapped_map.cp|--problem CaseStudy --map SwappedToKitchen|examples/colorblocksworld/paper.plan"
+"casestudy>plain|examples/colorblocks_to_blocks/forget_colors.cp|--problem CaseStudy --map ForgetColors|examples/colorblocksworld/paper.plan"
+"hanoi>blocks|examples/hanoi_to_blocks/hanoi_to_blocks.cp|--problem ThreeDiscs --map HanoiToBlocks|examples/hanoi/hanoi.plan"
+"sandwich>color|examples/kitchen_to_colorblocks/kitchen_to_color.cp|--problem MakeSandwich --map KitchenToColor|examples/sandwich_kitchen/sandwich.plan"
+"casestudy>warehouse|examples/kitchen_to_warehouse/kitchen_to_warehouse.cp|--problem CaseStudy --map ColorToWarehouse|examples/colorblocksworld/paper.plan"
 )
 
 bad=0
+# fd-plan: the steps of FD's plan, reach-goal included when the goal is a pattern; VAL and
+# catplan: FD's plan on the export; read-back: FD's plan as a plan of the catplan problem; the
+# second VAL: the example's (or transferred) plan carried to the export.
 printf '%-20s %-7s %-9s %-6s %-9s %-9s %-6s %s\n' case export fd-plan VAL catplan read-back VAL notes
 for c in "${cases[@]}"; do
     IFS='|' read -r name file opts plan <<<"$c"
@@ -84,7 +89,7 @@ for c in "${cases[@]}"; do
         # shellcheck disable=SC2086
         if "$catplan" pddl export "$file" $opts --plan "$plan" -o "$work/given.ipc" 2>/dev/null; then
             v4=$("$val" "$d" "$p" "$work/given.ipc" >/dev/null 2>&1 && echo valid || echo INVALID)
-            note="${note:-example plan}: $(grep -c '^(' "$work/given.ipc") steps"
+            note="${note:-example plan}: $(grep -c '^(' "$work/given.ipc") IPC steps"
         else
             v4=FAIL
         fi
