@@ -29,6 +29,13 @@ bool prefers(HeuristicKind h) {
     return h == HeuristicKind::HFF || h == HeuristicKind::LmCount;
 }
 
+// The evaluators whose preferred operators a configuration uses. LAMA takes them from h_FF only:
+// the landmark count's (every applicable action achieving a needed landmark) are so many that the
+// preferred lists stop telling the search anything (Fast Downward's lama-first: pref=false).
+bool gives_preferred(HeuristicKind h, SearchKind search) {
+    return search == SearchKind::Lama ? h == HeuristicKind::HFF : prefers(h);
+}
+
 // The evaluators of a configuration, made anew (a path-dependent one belongs to one search).
 class Evaluators {
 public:
@@ -42,14 +49,18 @@ public:
         for (auto k : kinds_) {
             owned_.push_back(make_evaluator(k, task, relaxed, budget));
             raw_.push_back(owned_.back().get());
+            if (gives_preferred(k, o.search)) {
+                preferred_.push_back(raw_.back());
+            }
         }
     }
 
     const std::vector<Evaluator*>& all() const { return raw_; }
 
-    Evaluator& first() { return *raw_.front(); }
+    /// The evaluators whose preferred operators the lazy search uses.
+    const std::vector<Evaluator*>& preferred() const { return preferred_; }
 
-    bool preferred() const { return std::any_of(kinds_.begin(), kinds_.end(), prefers); }
+    Evaluator& first() { return *raw_.front(); }
 
     std::string names() const {
         std::string out;
@@ -59,10 +70,29 @@ public:
         return out;
     }
 
+    /// ", preferred operators" and, when not every evaluator gives them, whose.
+    std::string preferred_names() const {
+        if (preferred_.empty()) {
+            return "";
+        }
+        std::string out = ", preferred operators";
+        if (preferred_.size() < raw_.size()) {
+            for (std::size_t i = 0; i < raw_.size(); ++i) {
+                bool p =
+                    std::find(preferred_.begin(), preferred_.end(), raw_[i]) != preferred_.end();
+                if (p) {
+                    out +=
+                        (out.back() == 's' ? " of " : " and ") + std::string(to_string(kinds_[i]));
+                }
+            }
+        }
+        return out;
+    }
+
 private:
     std::vector<HeuristicKind> kinds_;
     std::vector<std::unique_ptr<Evaluator>> owned_;
-    std::vector<Evaluator*> raw_;
+    std::vector<Evaluator*> raw_, preferred_;
 };
 
 std::string describe_config(const SearchOptions& o, const Evaluators& e) {
@@ -75,8 +105,7 @@ std::string describe_config(const SearchOptions& o, const Evaluators& e) {
         return fmt::format("eager greedy best-first, {}", e.names());
     case SearchKind::LazyGreedy:
     case SearchKind::Lama:
-        return fmt::format("lazy greedy best-first, {}{}", e.names(),
-                           e.preferred() ? ", preferred operators" : "");
+        return fmt::format("lazy greedy best-first, {}{}", e.names(), e.preferred_names());
     }
     CATPLAN_UNREACHABLE("search kind");
 }
@@ -132,14 +161,14 @@ private:
         switch (options_.search) {
         case SearchKind::BreadthFirst:
             out = weight == 0 ? breadth_first(space)
-                              : lazy_best_first(space, e.all(), false, weight, bound);
+                              : lazy_best_first(space, e.all(), {}, weight, bound);
             break;
         case SearchKind::AStar:
             out = eager_best_first(space, e.first(), true);
             break;
         case SearchKind::GreedyBestFirst:
             out = weight == 0 ? eager_best_first(space, e.first(), false)
-                              : lazy_best_first(space, e.all(), false, weight, bound);
+                              : lazy_best_first(space, e.all(), {}, weight, bound);
             break;
         case SearchKind::LazyGreedy:
         case SearchKind::Lama:
