@@ -299,6 +299,9 @@ nlohmann::json plan_json(const plan::SearchResult& r, const std::string& search,
             search_s > 0 ? static_cast<double>(st.evaluated) / search_s : 0.0;
         stats["memory_bytes"] = st.memory;
         stats["peak_memory_bytes"] = st.peak_memory;
+        stats["setup_memory_bytes"] = st.setup_memory;
+        stats["cpu_seconds"] = st.cpu_seconds;
+        stats["search_cpu_seconds"] = st.search_cpu_seconds();
     }
     j["statistics"] = std::move(stats);
     return j;

@@ -119,7 +119,7 @@ public:
     SearchStatus run() {
         Evaluators e(task_, relaxed_, budget_, options_);
         r_.config = describe_config(options_, e);
-        r_.stats.setup_seconds = budget_.elapsed();
+        r_.stats.end_setup(budget_);
         EngineResult first = search(e, 0, 0);
         if (first.status != SearchStatus::Solved) {
             return first.status;
@@ -204,8 +204,9 @@ void fill_stats(SearchResult& r, Budget& budget) {
     (void)budget.check();
     r.stats.memory = budget.resident();
     r.stats.peak_memory = budget.peak_bytes();
+    r.stats.cpu_seconds = Budget::cpu_seconds();
     if (r.stats.setup_seconds == 0) {
-        r.stats.setup_seconds = r.stats.seconds;
+        r.stats.end_setup(budget); // stopped during the set-up
     }
 }
 
