@@ -268,6 +268,9 @@ std::string plan_summary(const plan::SearchResult& r, const std::string& search,
         text +=
             fmt::format("{}anytime: {} plans found, the shortest kept\n", comment, r.stats.plans);
     }
+    if (!r.caveat.empty()) {
+        text += fmt::format("{}note: {}\n", comment, r.caveat);
+    }
     return text + plan::describe(r.stats, timing, comment);
 }
 
@@ -279,9 +282,10 @@ nlohmann::json plan_json(const plan::SearchResult& r, const std::string& search,
         j["plan"] = std::move(steps);
         j["optimal"] = r.optimal;
     }
-    j["search"] = {{"name", search},   {"config", r.config},
-                   {"path", r.path},   {"reason", r.path_reason},
-                   {"exits", r.exits}, {"exit_example", r.exit_example}};
+    j["search"] = {{"name", search},    {"config", r.config},
+                   {"path", r.path},    {"reason", r.path_reason},
+                   {"exits", r.exits},  {"exit_example", r.exit_example},
+                   {"caveat", r.caveat}};
     const auto& st = r.stats;
     nlohmann::json stats = {{"expanded", st.expanded},   {"evaluated", st.evaluated},
                             {"generated", st.generated}, {"duplicates", st.duplicates},

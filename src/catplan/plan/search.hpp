@@ -130,6 +130,9 @@ struct SearchResult {
     /// with any, "unsolvable" is not claimed from the grounded search.
     std::uint64_t exits = 0;
     std::string exit_example;
+    /// What a plan found does not say by itself (empty: nothing), e.g. that a step's arguments
+    /// leave several matches.
+    std::string caveat;
 };
 
 /// The statistics as text, each line starting with `prefix` (a comment mark): the counts (the

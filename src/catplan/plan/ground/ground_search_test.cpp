@@ -119,6 +119,39 @@ TEST(GroundSearch, AnUnreachableGoalIsProvedUnsolvable) {
     }
 }
 
+TEST(GroundSearch, APlanWhoseArgumentsLeaveSeveralMatchesIsKeptWithACaveat) {
+    // grab(b) takes the Clear part of some other block u, which no parameter names: with B and
+    // C clear, the step `grab(A)` can delete either. The search applied one, and says that the
+    // text cannot tell which (`catplan validate` calls the step ambiguous).
+    auto d = std::make_shared<Domain>(*blocks_domain(true));
+    ACSet l(d->schema), r(d->schema);
+    add_block(l, "b", true);
+    Part u = add_block(l, "u", true);
+    add_fact(l, kB.clear, kB.clear_of, u, "cu");
+    Part rb = add_block(r, "b", true);
+    add_block(r, "u", true);
+    add_fact(r, kB.holding, kB.held, rb, "h");
+    auto grab = std::const_pointer_cast<Rule>(make_rule("grab", l, r, {"b", "u"}));
+    grab->parameters.pop_back();
+    d->rules = {grab};
+    auto p = std::make_shared<Problem>();
+    p->domain = d;
+    p->initial = std::make_shared<ACSet>(blocks_state(d->schema, {"A", "B", "C"}, {{0}, {1}, {2}}));
+    ACSet g(d->schema);
+    add_fact(g, kB.holding, kB.held, add_block(g, "A"), "h");
+    p->goal = std::make_shared<ACSet>(std::move(g));
+    SearchOptions opt;
+    opt.search = SearchKind::Lama;
+    auto res = find_plan(*p, opt);
+    EXPECT_EQ(res.path, "grounded") << res.path_reason;
+    ASSERT_TRUE(res.plan);
+    ASSERT_EQ(res.plan->steps.size(), 1u);
+    auto v = validate_plan(*p, *res.plan);
+    EXPECT_FALSE(v.valid);
+    EXPECT_TRUE(v.ambiguous) << v.reason;
+    EXPECT_NE(res.caveat.find("ambiguous"), std::string::npos) << res.caveat;
+}
+
 TEST(GroundSearch, LimitsCountTheSetUpAndHold) {
     auto p = seeded_blocks(40, 7);
     SearchOptions time;
