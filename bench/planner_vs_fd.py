@@ -140,7 +140,7 @@ def fd_stats(p):
     return dict(expanded=last(r"Expanded (\d+) state", int),
                 evaluated=last(r"Evaluated (\d+) state", int),
                 search_cpu=last(r"Search time: ([0-9.]+)s"),
-                search_mb=last(r"Peak memory: (\d+) KB", int),
+                search_mb=last(r"Peak memory: (\d+) KB", lambda kb: int(kb) / 1024),
                 setup_mb=int(setup.group(1)) / 1024 if setup else None)
 
 
@@ -217,7 +217,9 @@ def cell(row):
     if row is None:
         return "–"
     if not row["solved"]:
-        return "not solved" if row["steps"] is None else "INVALID PLAN"
+        if row["steps"] is not None:
+            return "INVALID PLAN"
+        return "not solved" if row["exit"] == 0 else f"not solved (exit {row['exit']})"
     exp = f", {row['expanded']} exp." if row.get("expanded") is not None else ""
     return f"{row['wall']:.2f} s, {row['mb']:.0f} MB, {row['steps']} steps{exp}"
 

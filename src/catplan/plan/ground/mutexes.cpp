@@ -97,7 +97,9 @@ public:
             }
             instantiate(c, groups);
         }
-        return choose(std::move(groups));
+        std::sort(groups.begin(), groups.end());
+        groups.erase(std::unique(groups.begin(), groups.end()), groups.end());
+        return groups;
     }
 
 private:
@@ -230,32 +232,6 @@ private:
         }
     }
 
-    // Disjoint groups, greedily: the one with most atoms not yet covered first (a subset of a
-    // group is a group).
-    static std::vector<std::vector<VarId>> choose(std::vector<std::vector<VarId>> groups) {
-        std::set<VarId> covered;
-        std::priority_queue<std::pair<std::size_t, std::size_t>> by_size;
-        for (std::size_t i = 0; i < groups.size(); ++i) {
-            by_size.emplace(groups[i].size(), i);
-        }
-        std::vector<std::vector<VarId>> out;
-        while (!by_size.empty()) {
-            auto [size, i] = by_size.top();
-            by_size.pop();
-            auto& g = groups[i];
-            std::erase_if(g, [&](VarId v) { return covered.count(v) != 0; });
-            if (g.size() < size) {
-                if (g.size() >= 2) {
-                    by_size.emplace(g.size(), i);
-                }
-                continue;
-            }
-            covered.insert(g.begin(), g.end());
-            out.push_back(std::move(g));
-        }
-        return out;
-    }
-
     const Task& task_;
     Budget& budget_;
     std::vector<std::vector<AtomId>> produced_, consumed_; // per action
@@ -268,6 +244,30 @@ private:
 
 std::vector<std::vector<VarId>> find_mutex_groups(const Task& task, Budget& budget) {
     return Finder(task, budget).run();
+}
+
+std::vector<std::vector<VarId>> disjoint_groups(std::vector<std::vector<VarId>> groups) {
+    std::set<VarId> covered;
+    std::priority_queue<std::pair<std::size_t, std::size_t>> by_size;
+    for (std::size_t i = 0; i < groups.size(); ++i) {
+        by_size.emplace(groups[i].size(), i);
+    }
+    std::vector<std::vector<VarId>> out;
+    while (!by_size.empty()) {
+        auto [size, i] = by_size.top();
+        by_size.pop();
+        auto& g = groups[i];
+        std::erase_if(g, [&](VarId v) { return covered.count(v) != 0; });
+        if (g.size() < size) {
+            if (g.size() >= 2) {
+                by_size.emplace(g.size(), i); // smaller now: its turn comes again
+            }
+            continue;
+        }
+        covered.insert(g.begin(), g.end());
+        out.push_back(std::move(g));
+    }
+    return out;
 }
 
 } // namespace catplan::plan::ground

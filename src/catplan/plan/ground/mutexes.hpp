@@ -15,15 +15,20 @@
 // induction: at most one atom initially, and no action adds one without removing the one there.
 // Exits are never applied and conditions only restrict actions, so neither is needed.
 //
-// The groups returned are disjoint (each atom in at most one; the largest chosen first) and have
-// at least two atoms.
+// The groups found may overlap (blocksworld's Holding(A) is in three); the packer takes disjoint
+// ones (disjoint_groups), the landmarks' reasonable orderings all of them.
 
 #include "catplan/plan/ground/task.hpp"
 #include "catplan/plan/limits.hpp"
 
 namespace catplan::plan::ground {
 
-/// Disjoint groups of atom variables, at most one of each present in every reachable state.
+/// Groups of at least two atom variables, at most one of each present in every reachable state
+/// (sorted, each group once).
 std::vector<std::vector<VarId>> find_mutex_groups(const Task& task, Budget& budget);
+
+/// Disjoint groups of at least two variables taken from `groups` greedily, the one with most
+/// variables not yet covered first (a part of a group is a group).
+std::vector<std::vector<VarId>> disjoint_groups(std::vector<std::vector<VarId>> groups);
 
 } // namespace catplan::plan::ground

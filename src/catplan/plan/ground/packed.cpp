@@ -1,6 +1,7 @@
 #include "catplan/plan/ground/packed.hpp"
 
 #include "catplan/base/hash.hpp"
+#include "catplan/plan/ground/mutexes.hpp"
 
 #include <algorithm>
 #include <bit>
@@ -10,9 +11,9 @@ namespace catplan::plan::ground {
 
 StatePacker::StatePacker(const Task& task) {
     // Fields: one per mutex group, one per other variable, each with its variables.
-    std::vector<std::vector<VarId>> fields = task.mutex_groups;
+    std::vector<std::vector<VarId>> fields = disjoint_groups(task.mutex_groups);
     std::vector<char> grouped(task.vars.size(), 0);
-    for (const auto& g : task.mutex_groups) {
+    for (const auto& g : fields) {
         for (VarId v : g) {
             CATPLAN_ASSERT(grouped[v] == 0, "mutex groups are disjoint");
             grouped[v] = 1;
