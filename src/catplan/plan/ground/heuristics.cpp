@@ -137,12 +137,17 @@ struct FlatRelaxation {
         for (Prop g : r.goal()) {
             is_goal[g] = 1;
         }
+        needed.assign(r.num_props(), 0);
+        for (Prop p = 0; p < r.num_props(); ++p) {
+            needed[p] = is_goal[p] != 0 || pre_of_begin[p] != pre_of_begin[p + 1] ? 1 : 0;
+        }
     }
 
     std::vector<std::uint32_t> add_begin, pre_of_begin, num_pre, pre_of;
     std::vector<Prop> adds;
     std::vector<int> cost;
     std::vector<char> is_goal;
+    std::vector<char> needed; // a goal or a precondition (an absent atom is neither)
 };
 
 // h_add, h_max and h_FF: a generalised Dijkstra over the propositions from the state's, stopped
@@ -187,7 +192,9 @@ private:
         r_.props_of(state, init_);
         for (Prop p : init_) {
             cost_[p] = 0;
-            queue_.push(0, p);
+            if (flat_.needed[p] != 0) {
+                queue_.push(0, p); // popping it would fire nothing
+            }
         }
         for (std::uint32_t a : r_.unconditional()) {
             fire(a);
