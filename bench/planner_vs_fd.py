@@ -3,7 +3,7 @@
 
     planner_vs_fd.py --catplan BUILD/catplan --peers ../shared/peers --out DIR [--limit 60]
                      [--series ipc,blocks,perstate] [--pyperplan] [--only DOMAIN,...]
-                     [--per-domain N] [--blocks 20,24,...] [--perstate 30]
+                     [--per-domain N] [--blocks 20,24,...] [--perstate 30] [--repeat 3]
 
 Writes the problems (bench/pddl/generate.py: the IPC-style series, and seeded blocksworlds of 20 to
 40 blocks), runs every planner on every problem with the same wall-time limit, one process at a
@@ -21,7 +21,8 @@ Series:
             blocksworld of --perstate blocks (catplan --search gbfs --heuristic hff, FD
             eager_greedy([ff()])): expansions, evaluations, the search's CPU time per evaluated
             state, and the memory the search added per evaluated state (peak resident memory
-            minus the resident memory when the search began: catplan's statistics, FD's log).
+            minus the resident memory when the search began: catplan's statistics, FD's log);
+            each planner --repeat times, in turn, and the medians reported.
 
 FD's --overall-time-limit is CPU time; this script also stops every process at limit + 5 s of
 wall time. Benchmarks only: the peers are not Debian packages and neither the product nor its
@@ -187,7 +188,8 @@ def planners(args, series):
 def run_all(args, problems):
     rows = []
     for series, domain, name, dfile, pfile in problems:
-        for planner, build, plan_name, parse in planners(args, series):
+        repeat = args.repeat if series == "perstate" else 1
+        for planner, build, plan_name, parse in planners(args, series) * repeat:
             work = (args.out / "runs" / series / re.sub(r"\W+", "_", planner) / domain /
                     name.replace(" ", ""))
             work.mkdir(parents=True, exist_ok=True)
@@ -257,24 +259,51 @@ def table(rows, series, names):
     return "\n".join(out)
 
 
+def per_state(r):
+    """(µs of search CPU, bytes of added memory) per evaluated state of one run, or None."""
+    peak = r.get("search_mb") or r["mb"]  # FD: its search process's own peak
+    if not r.get("evaluated") or r.get("search_cpu") is None or r.get("setup_mb") is None:
+        return None
+    return (1e6 * r["search_cpu"] / r["evaluated"],
+            (peak - r["setup_mb"]) * 2**20 / r["evaluated"], peak)
+
+
+def spread(values, fmt):
+    med = statistics.median(values)
+    return f"{med:{fmt}} ({min(values):{fmt}}–{max(values):{fmt}})" if len(values) > 1 \
+        else f"{med:{fmt}}"
+
+
 def per_state_table(rows):
-    """µs of search CPU time and bytes of memory per evaluated state, both planners."""
-    out = ["| problem | planner | solved | steps | expanded | evaluated | search CPU | "
+    """µs of search CPU time and bytes of memory per evaluated state, both planners: the median
+    over the repetitions (and their range)."""
+    out = ["| problem | planner | runs solved | steps | expanded | evaluated | "
            "µs / evaluated state | peak memory | at search start | bytes / evaluated state |",
-           "|---|---|---|---|---|---|---|---|---|---|---|"]
+           "|---|---|---|---|---|---|---|---|---|---|"]
+    keys = []
     for r in rows:
-        if r["series"] != "perstate":
-            continue
-        peak = r.get("search_mb") or r["mb"]  # FD: its search process's own peak
-        us = per_byte = "–"
-        if r.get("evaluated") and r.get("search_cpu") is not None:
-            us = f"{1e6 * r['search_cpu'] / r['evaluated']:.1f}"
-        if r.get("evaluated") and r.get("setup_mb") is not None:
-            per_byte = f"{(peak - r['setup_mb']) * 2**20 / r['evaluated']:.0f}"
-        out.append(f"| {r['problem']} | {r['planner']} | {'yes' if r['solved'] else 'no'} | "
-                   f"{r['steps']} | {r.get('expanded')} | {r.get('evaluated')} | "
-                   f"{r.get('search_cpu') or 0:.2f} s | {us} | {peak:.1f} MiB | "
-                   f"{r.get('setup_mb') or 0:.1f} MiB | {per_byte} |")
+        if r["series"] == "perstate" and (r["problem"], r["planner"]) not in keys:
+            keys.append((r["problem"], r["planner"]))
+    medians = {}
+    for problem, planner in keys:
+        runs = [r for r in rows if r["series"] == "perstate" and
+                (r["problem"], r["planner"]) == (problem, planner)]
+        measured = [m for m in map(per_state, runs) if m]
+        first = runs[0]
+        us = spread([m[0] for m in measured], ".1f") if measured else "–"
+        per_byte = spread([m[1] for m in measured], ".0f") if measured else "–"
+        peak = spread([m[2] for m in measured], ".1f") + " MiB" if measured else "–"
+        if measured:
+            medians[(problem, planner)] = (statistics.median(m[0] for m in measured),
+                                           statistics.median(m[1] for m in measured))
+        out.append(f"| {problem} | {planner} | {sum(r['solved'] for r in runs)} of {len(runs)} | "
+                   f"{first['steps']} | {first.get('expanded')} | {first.get('evaluated')} | "
+                   f"{us} | {peak} | {first.get('setup_mb') or 0:.1f} MiB | {per_byte} |")
+    for problem in dict.fromkeys(p for p, _ in keys):
+        mine = [v for (p, _), v in medians.items() if p == problem]
+        if len(mine) == 2:
+            out.append(f"\n{problem}: catplan / FD per evaluated state, medians: time "
+                       f"{mine[0][0] / mine[1][0]:.2f}, memory {mine[0][1] / mine[1][1]:.2f}")
     return "\n".join(out)
 
 
@@ -291,6 +320,7 @@ def main():
     ap.add_argument("--blocks", default=",".join(map(str, BLOCKS_SIZES)),
                     help="the blocksworld sizes")
     ap.add_argument("--perstate", default="30", help="the blocksworld sizes of the perstate series")
+    ap.add_argument("--repeat", type=int, default=3, help="runs per planner in the perstate series")
     args = ap.parse_args()
     args.catplan = str(pathlib.Path(args.catplan).resolve())
     args.peers = args.peers.resolve()
