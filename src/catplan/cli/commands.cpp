@@ -473,7 +473,7 @@ void add_plan_commands(CLI::App& app, CommandTable& table) {
                        args->plan_args.problem, "language file (.cp), or DOMAIN.pddl PROBLEM.pddl");
     plan_cmd
         ->add_option("--search", args->plan_args.search,
-                     "lama (lazy greedy, hff and lmcount, preferred operators), lazy (lazy "
+                     "lama (lazy greedy, hff and lmcount, preferred operators of hff), lazy (lazy "
                      "greedy with --heuristic), gbfs (eager greedy), astar (optimal with an "
                      "admissible heuristic) or bfs (shortest plans, small problems)")
         ->check(CLI::IsMember({"lama", "lazy", "gbfs", "astar", "bfs"}))
