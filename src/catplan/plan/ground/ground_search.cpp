@@ -72,21 +72,16 @@ public:
 
     /// ", preferred operators" and, when not every evaluator gives them, whose.
     std::string preferred_names() const {
-        if (preferred_.empty()) {
-            return "";
+        if (preferred_.empty() || preferred_.size() == raw_.size()) {
+            return preferred_.empty() ? "" : ", preferred operators";
         }
-        std::string out = ", preferred operators";
-        if (preferred_.size() < raw_.size()) {
-            for (std::size_t i = 0; i < raw_.size(); ++i) {
-                bool p =
-                    std::find(preferred_.begin(), preferred_.end(), raw_[i]) != preferred_.end();
-                if (p) {
-                    out +=
-                        (out.back() == 's' ? " of " : " and ") + std::string(to_string(kinds_[i]));
-                }
+        std::string whose;
+        for (std::size_t i = 0; i < raw_.size(); ++i) {
+            if (std::find(preferred_.begin(), preferred_.end(), raw_[i]) != preferred_.end()) {
+                whose += (whose.empty() ? "" : " and ") + std::string(to_string(kinds_[i]));
             }
         }
-        return out;
+        return ", preferred operators of " + whose;
     }
 
 private:
