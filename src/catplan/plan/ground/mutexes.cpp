@@ -22,7 +22,9 @@ using Candidate = std::vector<CandidatePart>; // one part per object, sorted by 
 
 using Key = std::vector<ObjectId>;
 
+// Bounds on the analysis (a larger task gets fewer candidates checked, never a wrong group).
 constexpr std::size_t kMaxCandidates = 1000;
+constexpr std::size_t kMaxWork = 100'000'000; // atoms looked at, over all candidates
 
 // Why a candidate fails on an action: it produces two atoms of one group (no refinement helps),
 // or produces one of group `key` and consumes none.
@@ -85,7 +87,7 @@ public:
             }
         }
         std::vector<std::vector<VarId>> groups;
-        for (std::size_t n = 0; n < kMaxCandidates && !queue_.empty(); ++n) {
+        for (std::size_t n = 0; n < kMaxCandidates && work_ < kMaxWork && !queue_.empty(); ++n) {
             Candidate c = std::move(queue_.front());
             queue_.pop_front();
             budget_.poll();
@@ -130,9 +132,10 @@ private:
     }
 
     // The first action that unbalances a group of c, or nullopt when c holds.
-    std::optional<Failure> check(const Candidate& c) const {
+    std::optional<Failure> check(const Candidate& c) {
         std::vector<Key> made, used;
         for (ActionId a = 0; a < produced_.size(); ++a) {
+            work_ += 1 + produced_[a].size() + consumed_[a].size();
             made.clear();
             for (AtomId atom : produced_[a]) {
                 if (auto key = group_of(c, atom)) {
@@ -238,6 +241,7 @@ private:
     std::vector<std::vector<AtomId>> atoms_of_;            // per object of the schema
     std::deque<Candidate> queue_;
     std::set<Candidate> seen_;
+    std::size_t work_ = 0;
 };
 
 } // namespace

@@ -13,7 +13,9 @@
 // produces at most one atom and, when it produces one, consumes one; an action that produces
 // without consuming refines the candidate by a part of an atom it consumes. A group is proven by
 // induction: at most one atom initially, and no action adds one without removing the one there.
-// Exits are never applied and conditions only restrict actions, so neither is needed.
+// Exits are never applied and conditions only restrict actions, so neither is needed. The
+// analysis is bounded (1,000 candidates, 10^8 atoms looked at): a large task may get fewer
+// groups, never a wrong one.
 //
 // The groups found may overlap (blocksworld's Holding(A) is in three); the packer takes disjoint
 // ones (disjoint_groups), the landmarks' reasonable orderings all of them.
