@@ -282,10 +282,12 @@ nlohmann::json plan_json(const plan::SearchResult& r, const std::string& search,
         j["plan"] = std::move(steps);
         j["optimal"] = r.optimal;
     }
-    j["search"] = {{"name", search},    {"config", r.config},
-                   {"path", r.path},    {"reason", r.path_reason},
-                   {"exits", r.exits},  {"exit_example", r.exit_example},
-                   {"caveat", r.caveat}};
+    j["search"] = {{"name", search},   {"config", r.config},
+                   {"path", r.path},   {"reason", r.path_reason},
+                   {"exits", r.exits}, {"exit_example", r.exit_example}};
+    if (!r.caveat.empty()) {
+        j["search"]["caveat"] = r.caveat;
+    }
     const auto& st = r.stats;
     nlohmann::json stats = {{"expanded", st.expanded},   {"evaluated", st.evaluated},
                             {"generated", st.generated}, {"duplicates", st.duplicates},
