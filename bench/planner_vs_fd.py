@@ -2,16 +2,31 @@
 """catplan plan beside Fast Downward (and pyperplan) on the same problems, in one run.
 
     planner_vs_fd.py --catplan BUILD/catplan --peers ../shared/peers --out DIR [--limit 60]
-                     [--series ipc,blocks] [--pyperplan] [--only DOMAIN,...]
-                     [--per-domain N] [--blocks 20,24,...]
+                     [--series ipc,blocks,perstate] [--pyperplan] [--only DOMAIN,...]
+                     [--per-domain N] [--blocks 20,24,...] [--perstate 30] [--repeat 3]
 
 Writes the problems (bench/pddl/generate.py: the IPC-style series, and seeded blocksworlds of 20 to
 40 blocks), runs every planner on every problem with the same wall-time limit, one process at a
 time, and measures each process's wall time and peak resident memory (wait4's ru_maxrss). Every
 plan found is validated by `catplan validate` and by VAL; a plan either rejects is counted as a
 failure. Prints a Markdown table per series, coverage, medians and the ratios catplan / FD, and
-writes the raw rows to DIR/results.json. Benchmarks only: the peers are not Debian packages and
-neither the product nor its tests need them.
+writes the raw rows to DIR/results.json.
+
+Series:
+  ipc       the first N problems of each IPC-style domain: catplan (default configuration, lama)
+            beside FD lama-first, and pyperplan (gbfs, hff) with --pyperplan;
+  blocks    seeded blocksworlds (random initial and goal towers, seed 7000 + n): catplan beside
+            FD lama-first;
+  perstate  the same algorithm in both planners, eager greedy best-first with h_FF on a seeded
+            blocksworld of --perstate blocks (catplan --search gbfs --heuristic hff, FD
+            eager_greedy([ff()])): expansions, evaluations, the search's CPU time per evaluated
+            state, and the memory the search added per evaluated state (peak resident memory
+            minus the resident memory when the search began: catplan's statistics, FD's log);
+            each planner --repeat times, in turn, and the medians reported.
+
+FD's --overall-time-limit is CPU time; this script also stops every process at limit + 5 s of
+wall time. Benchmarks only: the peers are not Debian packages and neither the product nor its
+tests need them.
 """
 import argparse
 import json
@@ -29,9 +44,17 @@ sys.path.insert(0, str(HERE / "pddl"))
 import generate  # noqa: E402
 
 BLOCKS_SIZES = list(range(20, 41, 2))
+BLOCKS_DOMAIN = HERE / "pddl/domains/blocksworld.pddl"
 
 
-def write_problems(out, series, only, per_domain, blocks):
+def blocks_problem(out, n):
+    path = out / "problems" / "blocks" / f"b{n}.pddl"
+    path.parent.mkdir(parents=True, exist_ok=True)
+    path.write_text(generate.blocksworld((n,), random.Random(7000 + n), f"blocks-{n}"))
+    return path
+
+
+def write_problems(out, series, only, per_domain, blocks, perstate):
     """The (series, domain, problem name, domain file, problem file) of every problem."""
     problems = []
     if "ipc" in series:
@@ -47,20 +70,21 @@ def write_problems(out, series, only, per_domain, blocks):
                                  path))
     if "blocks" in series:
         for n in blocks:
-            path = out / "problems" / "blocks" / f"b{n}.pddl"
-            path.parent.mkdir(parents=True, exist_ok=True)
-            rng = random.Random(7000 + n)
-            path.write_text(generate.blocksworld((n,), rng, f"blocks-{n}"))
-            problems.append(("blocks", "blocksworld", f"{n} blocks",
-                             HERE / "pddl/domains/blocksworld.pddl", path))
+            problems.append(("blocks", "blocksworld", f"{n} blocks", BLOCKS_DOMAIN,
+                             blocks_problem(out, n)))
+    if "perstate" in series:
+        for n in perstate:
+            problems.append(("perstate", "blocksworld", f"{n} blocks", BLOCKS_DOMAIN,
+                             blocks_problem(out, n)))
     return problems
 
 
 def run(cmd, limit, cwd):
-    """Wall seconds, peak resident MB, exit code, output of one process (killed at limit + 5 s)."""
+    """Wall seconds, peak resident MB, CPU seconds, exit code, stdout and stderr of one process
+    (killed at limit + 5 s)."""
     start = time.monotonic()
-    with open(cwd / "log.txt", "w") as log:
-        proc = subprocess.Popen(cmd, cwd=cwd, stdout=log, stderr=subprocess.STDOUT)
+    with open(cwd / "out.txt", "w") as out, open(cwd / "err.txt", "w") as err:
+        proc = subprocess.Popen(cmd, cwd=cwd, stdout=out, stderr=err)
         deadline = start + limit + 5
         while True:
             pid, status, usage = os.wait4(proc.pid, os.WNOHANG)
@@ -73,7 +97,9 @@ def run(cmd, limit, cwd):
             time.sleep(0.005)
     wall = time.monotonic() - start
     code = os.waitstatus_to_exitcode(status)
-    return wall, usage.ru_maxrss / 1024, code, (cwd / "log.txt").read_text(errors="replace")
+    read = lambda name: (cwd / name).read_text(errors="replace")  # noqa: E731
+    return dict(wall=wall, mb=usage.ru_maxrss / 1024, cpu=usage.ru_utime + usage.ru_stime,
+                exit=code, out=read("out.txt"), err=read("err.txt"))
 
 
 def plan_steps(path):
@@ -90,48 +116,102 @@ def validate(args, domain, problem, plan):
     return cat.returncode == 0, val.returncode == 0 and "Plan valid" in val.stdout
 
 
-def planners(args):
-    """(name, command builder, plan file name) per planner."""
+def catplan_stats(p):
+    """Counts and times from catplan's JSON statistics."""
+    try:
+        st = json.loads(p["out"])["statistics"]
+    except (ValueError, KeyError):
+        return {}
+    return dict(expanded=st.get("expanded"), evaluated=st.get("evaluated"),
+                search_cpu=st.get("search_cpu_seconds"),
+                setup_mb=st.get("setup_memory_bytes", 0) / 2**20)
+
+
+def fd_stats(p):
+    """Counts and times from Fast Downward's log (the last search's, for anytime aliases)."""
+    log = p["out"]
+
+    def last(pattern, cast=float):
+        found = re.findall(pattern, log)
+        return cast(found[-1]) if found else None
+
+    # The resident memory when the search began: the first line that reports the initial
+    # heuristic value.
+    setup = re.search(r"\[t=[0-9.e-]+s, (\d+) KB\] Initial heuristic value", log)
+    return dict(expanded=last(r"Expanded (\d+) state", int),
+                evaluated=last(r"Evaluated (\d+) state", int),
+                search_cpu=last(r"Search time: ([0-9.]+)s"),
+                search_mb=last(r"Peak memory: (\d+) KB", lambda kb: int(kb) / 1024),
+                setup_mb=int(setup.group(1)) / 1024 if setup else None)
+
+
+def pyperplan_stats(p):
+    log = p["out"] + p["err"]
+    expanded = re.findall(r"(\d+) Nodes expanded", log)
+    return dict(expanded=int(expanded[-1]) if expanded else None)
+
+
+def planners(args, series):
+    """(name, command builder, plan file name or None, statistics parser) per planner."""
     fd = str(args.peers / "bin/fast-downward")
     limit = f"{args.limit:g}s"
+
+    def catplan(*extra):
+        return lambda d, p: [args.catplan, "plan", str(d), str(p), "--max-time",
+                             f"{args.limit:g}", "--format", "json", "-o", "plan.txt", *extra]
+
+    def lama_first(d, p):
+        return [fd, "--overall-time-limit", limit, "--plan-file", "plan.txt", "--alias",
+                "lama-first", str(d), str(p)]
+
+    def eager_greedy_ff(d, p):
+        return [fd, "--overall-time-limit", limit, "--plan-file", "plan.txt", str(d), str(p),
+                "--search", "eager_greedy([ff()])"]
+
+    if series == "perstate":
+        return [
+            ("catplan gbfs hff", catplan("--search", "gbfs", "--heuristic", "hff"), "plan.txt",
+             catplan_stats),
+            ("FD eager_greedy([ff()])", eager_greedy_ff, "plan.txt", fd_stats),
+        ]
     result = [
-        ("catplan", lambda d, p: [args.catplan, "plan", str(d), str(p), "--max-time",
-                                  f"{args.limit:g}", "-o", "plan.txt"], "plan.txt"),
-        ("FD lama-first", lambda d, p: [fd, "--overall-time-limit", limit, "--plan-file",
-                                        "plan.txt", "--alias", "lama-first", str(d), str(p)],
-         "plan.txt"),
+        ("catplan", catplan(), "plan.txt", catplan_stats),
+        ("FD lama-first", lama_first, "plan.txt", fd_stats),
     ]
-    if args.pyperplan:
+    if args.pyperplan and series == "ipc":
         result.append(("pyperplan", lambda d, p: [str(args.peers / "bin/pyperplan"), "-s", "gbfs",
-                                                  "-H", "hff", str(d), str(p)], None))
+                                                  "-H", "hff", str(d), str(p)], None,
+                       pyperplan_stats))
     return result
 
 
 def run_all(args, problems):
     rows = []
     for series, domain, name, dfile, pfile in problems:
-        for planner, build, plan_name in planners(args):
-            work = args.out / "runs" / planner.split()[0] / domain / name.replace(" ", "")
+        repeat = args.repeat if series == "perstate" else 1
+        for planner, build, plan_name, parse in planners(args, series) * repeat:
+            work = (args.out / "runs" / series / re.sub(r"\W+", "_", planner) / domain /
+                    name.replace(" ", ""))
             work.mkdir(parents=True, exist_ok=True)
             pcopy = work / "problem.pddl"
             pcopy.write_text(pfile.read_text())
-            for old in work.glob("plan.txt*"):
+            for old in list(work.glob("plan.txt*")) + list(work.glob("*.soln")):
                 old.unlink()
-            wall, mb, code, log = run(build(dfile, pcopy), args.limit, work)
+            p = run(build(dfile, pcopy), args.limit, work)
             plan = work / (plan_name or "problem.pddl.soln")
-            steps = plan_steps(plan) if wall <= args.limit else None
+            steps = plan_steps(plan) if p["wall"] <= args.limit + 5 else None
             ok_cat = ok_val = False
             if steps is not None:
                 ok_cat, ok_val = validate(args, dfile, pcopy, plan)
-            search = re.search(r"Search time: ([0-9.]+)s", log)
-            row = dict(series=series, domain=domain, problem=name, planner=planner, wall=wall,
-                       mb=mb, exit=code, steps=steps, catplan_valid=ok_cat, val_valid=ok_val,
-                       solved=steps is not None and ok_cat and ok_val,
-                       fd_search=float(search.group(1)) if search else None)
+            row = dict(series=series, domain=domain, problem=name, planner=planner,
+                       wall=p["wall"], mb=p["mb"], cpu=p["cpu"], exit=p["exit"], steps=steps,
+                       catplan_valid=ok_cat, val_valid=ok_val,
+                       solved=steps is not None and ok_cat and ok_val, **parse(p))
             rows.append(row)
-            print(f"{series:6} {domain:12} {name:9} {planner:14} "
-                  f"{'solved' if row['solved'] else 'FAILED':6} {wall:7.2f} s {mb:7.1f} MB "
-                  f"steps {steps} exit {code} valid catplan/VAL {ok_cat}/{ok_val}", flush=True)
+            print(f"{series:8} {domain:12} {name:9} {planner:24} "
+                  f"{'solved' if row['solved'] else 'FAILED':6} {p['wall']:7.2f} s "
+                  f"{p['mb']:7.1f} MB steps {steps} expanded {row.get('expanded')} exit "
+                  f"{p['exit']} valid catplan/VAL {ok_cat}/{ok_val}", flush=True)
     return rows
 
 
@@ -139,8 +219,11 @@ def cell(row):
     if row is None:
         return "–"
     if not row["solved"]:
-        return "not solved" if row["steps"] is None else "INVALID PLAN"
-    return f"{row['wall']:.2f} s, {row['mb']:.0f} MB, {row['steps']} steps"
+        if row["steps"] is not None:
+            return "INVALID PLAN"
+        return "not solved" if row["exit"] == 0 else f"not solved (exit {row['exit']})"
+    exp = f", {row['expanded']} exp." if row.get("expanded") is not None else ""
+    return f"{row['wall']:.2f} s, {row['mb']:.0f} MB, {row['steps']} steps{exp}"
 
 
 def table(rows, series, names):
@@ -152,8 +235,9 @@ def table(rows, series, names):
             keys.append((r["domain"], r["problem"]))
     ratios = []
     for domain, problem in keys:
-        by = {r["planner"]: r for r in rows if (r["domain"], r["problem"]) == (domain, problem)}
-        cat, fd = by.get("catplan"), by.get("FD lama-first")
+        by = {r["planner"]: r for r in rows if r["series"] == series and
+              (r["domain"], r["problem"]) == (domain, problem)}
+        cat, fd = by.get(names[0]), by.get(names[1])
         ratio = "–"
         if cat and fd and cat["solved"] and fd["solved"]:
             ratios.append(cat["wall"] / fd["wall"])
@@ -169,8 +253,57 @@ def table(rows, series, names):
         out.append(f"- {n}: solved {len(solved)} of {len(mine)}; median time of the solved "
                    f"{med:.2f} s, median peak memory {medmb:.0f} MB")
     if ratios:
-        out.append(f"- catplan / FD whole-process time where both solved ({len(ratios)}): median "
-                   f"{statistics.median(ratios):.2f}, min {min(ratios):.2f}, max {max(ratios):.2f}")
+        out.append(f"- {names[0]} / {names[1]} whole-process time where both solved "
+                   f"({len(ratios)}): median {statistics.median(ratios):.2f}, min "
+                   f"{min(ratios):.2f}, max {max(ratios):.2f}")
+    return "\n".join(out)
+
+
+def per_state(r):
+    """(µs of search CPU, bytes of added memory) per evaluated state of one run, or None."""
+    peak = r.get("search_mb") or r["mb"]  # FD: its search process's own peak
+    if not r.get("evaluated") or r.get("search_cpu") is None or r.get("setup_mb") is None:
+        return None
+    return (1e6 * r["search_cpu"] / r["evaluated"],
+            (peak - r["setup_mb"]) * 2**20 / r["evaluated"], peak)
+
+
+def spread(values, fmt):
+    med = statistics.median(values)
+    return f"{med:{fmt}} ({min(values):{fmt}}–{max(values):{fmt}})" if len(values) > 1 \
+        else f"{med:{fmt}}"
+
+
+def per_state_table(rows):
+    """µs of search CPU time and bytes of memory per evaluated state, both planners: the median
+    over the repetitions (and their range)."""
+    out = ["| problem | planner | runs solved | steps | expanded | evaluated | "
+           "µs / evaluated state | peak memory | at search start | bytes / evaluated state |",
+           "|---|---|---|---|---|---|---|---|---|---|"]
+    keys = []
+    for r in rows:
+        if r["series"] == "perstate" and (r["problem"], r["planner"]) not in keys:
+            keys.append((r["problem"], r["planner"]))
+    medians = {}
+    for problem, planner in keys:
+        runs = [r for r in rows if r["series"] == "perstate" and
+                (r["problem"], r["planner"]) == (problem, planner)]
+        measured = [m for m in map(per_state, runs) if m]
+        first = runs[0]
+        us = spread([m[0] for m in measured], ".1f") if measured else "–"
+        per_byte = spread([m[1] for m in measured], ".0f") if measured else "–"
+        peak = spread([m[2] for m in measured], ".1f") + " MiB" if measured else "–"
+        if measured:
+            medians[(problem, planner)] = (statistics.median(m[0] for m in measured),
+                                           statistics.median(m[1] for m in measured))
+        out.append(f"| {problem} | {planner} | {sum(r['solved'] for r in runs)} of {len(runs)} | "
+                   f"{first['steps']} | {first.get('expanded')} | {first.get('evaluated')} | "
+                   f"{us} | {peak} | {first.get('setup_mb') or 0:.1f} MiB | {per_byte} |")
+    for problem in dict.fromkeys(p for p, _ in keys):
+        mine = [v for (p, _), v in medians.items() if p == problem]
+        if len(mine) == 2:
+            out.append(f"\n{problem}: catplan / FD per evaluated state, medians: time "
+                       f"{mine[0][0] / mine[1][0]:.2f}, memory {mine[0][1] / mine[1][1]:.2f}")
     return "\n".join(out)
 
 
@@ -180,26 +313,31 @@ def main():
     ap.add_argument("--peers", required=True, type=pathlib.Path)
     ap.add_argument("--out", required=True, type=pathlib.Path)
     ap.add_argument("--limit", type=float, default=60)
-    ap.add_argument("--series", default="ipc,blocks")
+    ap.add_argument("--series", default="ipc,blocks,perstate")
     ap.add_argument("--only", default="")
-    ap.add_argument("--pyperplan", action="store_true")
+    ap.add_argument("--pyperplan", action="store_true", help="pyperplan too (ipc series)")
     ap.add_argument("--per-domain", type=int, default=4, help="the first N problems of a domain")
     ap.add_argument("--blocks", default=",".join(map(str, BLOCKS_SIZES)),
                     help="the blocksworld sizes")
+    ap.add_argument("--perstate", default="30", help="the blocksworld sizes of the perstate series")
+    ap.add_argument("--repeat", type=int, default=3, help="runs per planner in the perstate series")
     args = ap.parse_args()
     args.catplan = str(pathlib.Path(args.catplan).resolve())
     args.peers = args.peers.resolve()
     args.out = args.out.resolve()
     series = args.series.split(",")
     only = [d for d in args.only.split(",") if d]
-    blocks = [int(n) for n in args.blocks.split(",") if n]
-    problems = write_problems(args.out, series, only, args.per_domain, blocks)
+    sizes = lambda text: [int(n) for n in text.split(",") if n]  # noqa: E731
+    problems = write_problems(args.out, series, only, args.per_domain, sizes(args.blocks),
+                              sizes(args.perstate))
     rows = run_all(args, problems)
     (args.out / "results.json").write_text(json.dumps(rows, indent=1))
-    names = [p[0] for p in planners(args)]
     for s in series:
         print(f"\n### {s}\n")
-        print(table(rows, s, names))
+        if s == "perstate":
+            print(per_state_table(rows))
+        else:
+            print(table(rows, s, [p[0] for p in planners(args, s)]))
 
 
 if __name__ == "__main__":

@@ -268,6 +268,9 @@ std::string plan_summary(const plan::SearchResult& r, const std::string& search,
         text +=
             fmt::format("{}anytime: {} plans found, the shortest kept\n", comment, r.stats.plans);
     }
+    if (!r.caveat.empty()) {
+        text += fmt::format("{}note: {}\n", comment, r.caveat);
+    }
     return text + plan::describe(r.stats, timing, comment);
 }
 
@@ -282,6 +285,9 @@ nlohmann::json plan_json(const plan::SearchResult& r, const std::string& search,
     j["search"] = {{"name", search},   {"config", r.config},
                    {"path", r.path},   {"reason", r.path_reason},
                    {"exits", r.exits}, {"exit_example", r.exit_example}};
+    if (!r.caveat.empty()) {
+        j["search"]["caveat"] = r.caveat;
+    }
     const auto& st = r.stats;
     nlohmann::json stats = {{"expanded", st.expanded},   {"evaluated", st.evaluated},
                             {"generated", st.generated}, {"duplicates", st.duplicates},
@@ -299,6 +305,9 @@ nlohmann::json plan_json(const plan::SearchResult& r, const std::string& search,
             search_s > 0 ? static_cast<double>(st.evaluated) / search_s : 0.0;
         stats["memory_bytes"] = st.memory;
         stats["peak_memory_bytes"] = st.peak_memory;
+        stats["setup_memory_bytes"] = st.setup_memory;
+        stats["cpu_seconds"] = st.cpu_seconds;
+        stats["search_cpu_seconds"] = st.search_cpu_seconds();
     }
     j["statistics"] = std::move(stats);
     return j;
@@ -466,7 +475,7 @@ void add_plan_commands(CLI::App& app, CommandTable& table) {
                        args->plan_args.problem, "language file (.cp), or DOMAIN.pddl PROBLEM.pddl");
     plan_cmd
         ->add_option("--search", args->plan_args.search,
-                     "lama (lazy greedy, hff and lmcount, preferred operators), lazy (lazy "
+                     "lama (lazy greedy, hff and lmcount, preferred operators of hff), lazy (lazy "
                      "greedy with --heuristic), gbfs (eager greedy), astar (optimal with an "
                      "admissible heuristic) or bfs (shortest plans, small problems)")
         ->check(CLI::IsMember({"lama", "lazy", "gbfs", "astar", "bfs"}))

@@ -88,7 +88,7 @@ private:
         heuristic_ = make_heuristic(
             options_.search == SearchKind::BreadthFirst ? HeuristicKind::Blind : options_.heuristic,
             problem_, &budget_);
-        stats_.setup_seconds = budget_.elapsed();
+        stats_.end_setup(budget_);
         auto root = registry_.insert(*problem_.initial).id;
         info_.push_back({});
         info_[root].h = evaluate(root);
@@ -196,6 +196,7 @@ private:
         budget_.check();
         stats_.memory = budget_.resident();
         stats_.peak_memory = budget_.peak_bytes();
+        stats_.cpu_seconds = Budget::cpu_seconds();
     }
 
     void report() {
@@ -218,7 +219,7 @@ private:
             r.plan = extract_plan(*goal);
         }
         if (stats_.setup_seconds == 0) {
-            stats_.setup_seconds = budget_.elapsed(); // stopped during the set-up
+            stats_.end_setup(budget_); // stopped during the set-up
         }
         fill_stats();
         r.stats = stats_;

@@ -3,6 +3,7 @@
 #include "catplan/base/assert.hpp"
 
 #include <algorithm>
+#include <ctime>
 
 namespace catplan::plan {
 
@@ -46,6 +47,10 @@ std::optional<SearchStatus> Budget::check() {
         return SearchStatus::MemoryLimit;
     }
     return std::nullopt;
+}
+
+double Budget::cpu_seconds() {
+    return static_cast<double>(std::clock()) / CLOCKS_PER_SEC;
 }
 
 bool Budget::would_exceed(std::size_t bytes) {

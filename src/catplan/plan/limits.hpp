@@ -67,6 +67,9 @@ public:
     /// Whether `bytes` more memory now would pass the memory limit (reads the resident memory).
     bool would_exceed(std::size_t bytes);
 
+    /// CPU seconds this process has used (all its threads, since it began).
+    static double cpu_seconds();
+
     /// Seconds since the start.
     double elapsed() const { return std::chrono::duration<double>(Clock::now() - start_).count(); }
 

@@ -61,10 +61,12 @@ std::string describe(const SearchStats& st, bool timing, std::string_view prefix
     if (timing) {
         double search = st.search_seconds();
         text += fmt::format(
-            "{}time {:.3f} s (set-up {:.3f} s, search {:.3f} s), {:.0f} expanded/s, {:.0f} "
-            "evaluated/s, memory {:.1f} MB (peak {:.1f} MB)\n",
-            prefix, st.seconds, st.setup_seconds, search, per_second(st.expanded, search),
-            per_second(st.evaluated, search), megabytes(st.memory), megabytes(st.peak_memory));
+            "{}time {:.3f} s (set-up {:.3f} s, search {:.3f} s; CPU {:.3f} s, search {:.3f} s), "
+            "{:.0f} expanded/s, {:.0f} evaluated/s, memory {:.1f} MB (peak {:.1f} MB, {:.1f} MB "
+            "after the set-up)\n",
+            prefix, st.seconds, st.setup_seconds, search, st.cpu_seconds, st.search_cpu_seconds(),
+            per_second(st.expanded, search), per_second(st.evaluated, search), megabytes(st.memory),
+            megabytes(st.peak_memory), megabytes(st.setup_memory));
     }
     return text;
 }

@@ -71,9 +71,25 @@ struct SearchStats {
     std::uint64_t plans = 0;      // plans found (more than one with anytime)
     std::size_t memory = 0;       // resident bytes of the process now
     std::size_t peak_memory = 0;  // the largest resident bytes seen
+    double cpu_seconds = 0;       // CPU time of the process at the end (all its threads)
+    double setup_cpu_seconds = 0; // CPU time of the process when the set-up ended
+    std::size_t setup_memory = 0; // resident bytes when the set-up ended
 
     /// Seconds of search proper (seconds - setup_seconds).
     double search_seconds() const { return seconds > setup_seconds ? seconds - setup_seconds : 0; }
+
+    /// CPU seconds of search proper (cpu_seconds - setup_cpu_seconds).
+    double search_cpu_seconds() const {
+        return cpu_seconds > setup_cpu_seconds ? cpu_seconds - setup_cpu_seconds : 0;
+    }
+
+    /// Records the end of the set-up: its wall time, CPU time and resident memory.
+    void end_setup(Budget& budget) {
+        setup_seconds = budget.elapsed();
+        setup_cpu_seconds = Budget::cpu_seconds();
+        (void)budget.check();
+        setup_memory = budget.resident();
+    }
 };
 
 struct SearchOptions {
@@ -114,6 +130,9 @@ struct SearchResult {
     /// with any, "unsolvable" is not claimed from the grounded search.
     std::uint64_t exits = 0;
     std::string exit_example;
+    /// What a plan found does not say by itself (empty: nothing), e.g. that a step's arguments
+    /// leave several matches.
+    std::string caveat;
 };
 
 /// The statistics as text, each line starting with `prefix` (a comment mark): the counts (the

@@ -314,7 +314,10 @@ std::string describe_match(const ACSetMorphism& m, const ACSet& l, const ACSet& 
     return fmt::format("{}", fmt::join(once, ", "));
 }
 
-Result<ACSetMorphism> resolve_step(const Rule& rule, const ACSet& x, const Step& step) {
+namespace {
+
+// resolve_step; *ambiguous tells whether it failed because the arguments leave several matches.
+Result<ACSetMorphism> resolve(const Rule& rule, const ACSet& x, const Step& step, bool* ambiguous) {
     const auto& s = x.schema();
     if (step.args.size() != rule.parameters.size()) {
         std::vector<std::string> names;
@@ -352,6 +355,7 @@ Result<ACSetMorphism> resolve_step(const Rule& rule, const ACSet& x, const Step&
         return std::move(matches[0]);
     }
     if (matches.size() > 1) {
+        *ambiguous = true;
         return fail(fmt::format("ambiguous: the arguments leave several matches, e.g. {{{}}} and "
                                 "{{{}}}",
                                 describe_match(matches[0], rule.L, x),
@@ -368,6 +372,13 @@ Result<ACSetMorphism> resolve_step(const Rule& rule, const ACSet& x, const Step&
     }
     auto missing = explain_no_embedding(rule.L, x, bindings);
     return fail(fmt::format("no match: {}", missing ? *missing : embedding.error()));
+}
+
+} // namespace
+
+Result<ACSetMorphism> resolve_step(const Rule& rule, const ACSet& x, const Step& step) {
+    bool ambiguous = false;
+    return resolve(rule, x, step, &ambiguous);
 }
 
 Result<ACSetMorphism> embed_goal(const ACSet& goal, const ACSet& x) {
@@ -402,7 +413,7 @@ Validation validate_plan(const Problem& problem, const Plan& plan, const Validat
                                    step.action, problem.domain->name, fmt::join(names, ", "));
             break;
         }
-        auto m = resolve_step(*rule, x, step);
+        auto m = resolve(*rule, x, step, &v.ambiguous);
         if (!m) {
             v.failed_step = i;
             v.reason = fmt::format("{}: {}", prefix, m.error());

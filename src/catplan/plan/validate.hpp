@@ -73,6 +73,9 @@ struct Validation {
     std::optional<std::size_t> failed_step;
     /// Why the plan is invalid: "step 3 pickup(B): no match: ..." or "goal not reached: ...".
     std::string reason;
+    /// The failed step's arguments leave several matches (the plan may hold with one of them:
+    /// its text cannot say which).
+    bool ambiguous = false;
     /// The match of each step applied, in order.
     std::vector<ACSetMorphism> matches;
     /// With keep_states: X_0 (the initial state) and the state after each step applied.

@@ -4,6 +4,7 @@
 #include "catplan/plan/ground/compile.hpp"
 
 #include "catplan/plan/ground/grounding.hpp"
+#include "catplan/plan/ground/mutexes.hpp"
 
 #include <fmt/format.h>
 
@@ -224,6 +225,7 @@ Result<Task> compile(const ProblemPtr& problem, Budget& budget, const CompileOpt
     }
     task.initial = u.initial_values;
     task.initial.resize(task.vars.size(), 0);
+    task.mutex_groups = find_mutex_groups(task, budget);
     return task;
 }
 

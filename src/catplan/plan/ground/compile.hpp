@@ -15,6 +15,7 @@
 //    not), and its negative application conditions (every extension of the match along L -> N,
 //    as facts).
 // 5. The goal: every monic match of the goal, as a term of facts.
+// 6. Mutex groups of atoms (mutexes.hpp), so that states pack into fewer bits.
 //
 // The fast path does not apply (the result says why) to SPO rules, positive application
 // conditions, rules that merge parts, an object whose parts could be merged, a state with two

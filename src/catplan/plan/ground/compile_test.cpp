@@ -1,7 +1,14 @@
 #include "catplan/plan/detail/test_domains.hpp"
 #include "catplan/plan/ground/compile.hpp"
+#include "catplan/plan/ground/heuristics.hpp"
+#include "catplan/plan/ground/mutexes.hpp"
+#include "catplan/plan/ground/successors.hpp"
 
 #include <gtest/gtest.h>
+
+#include <functional>
+#include <limits>
+#include <set>
 
 namespace catplan::plan::ground {
 namespace {
@@ -13,6 +20,37 @@ Task compiled(const ProblemPtr& p) {
     auto t = compile(p, budget);
     EXPECT_TRUE(t.has_value()) << (t ? "" : t.error());
     return t ? std::move(*t) : Task{};
+}
+
+// Visits the states of seeded random walks from the initial state: each state as a value per
+// variable, with the action that led to it (kNone for the initial state); a walk ends early where
+// no action applies.
+void for_each_walk_state(
+    const Task& t, std::uint64_t seed, int walks, int steps,
+    const std::function<void(const std::vector<std::uint32_t>&, ActionId)>& visit) {
+    StatePacker packer(t);
+    SuccessorGenerator gen(t, packer);
+    std::mt19937_64 rng(seed);
+    std::vector<Word> s(packer.words()), next(packer.words());
+    std::vector<std::uint32_t> values;
+    std::vector<ActionId> ops;
+    for (int walk = 0; walk < walks; ++walk) {
+        packer.pack(t.initial, s.data());
+        ActionId via = kNone;
+        for (int step = 0;; ++step) {
+            packer.unpack(s.data(), values);
+            visit(values, via);
+            gen.applicable(s.data(), ops);
+            std::erase_if(ops,
+                          [&](ActionId a) { return !apply(t, packer, s.data(), a, next.data()); });
+            if (step == steps || ops.empty()) {
+                break;
+            }
+            via = ops[rng() % ops.size()];
+            (void)apply(t, packer, s.data(), via, next.data());
+            s.swap(next);
+        }
+    }
 }
 
 std::vector<std::string> action_names(const Task& t) {
@@ -62,14 +100,6 @@ TEST(Compile, ThePapersCaseStudyHasOneMarkerSlot) {
     EXPECT_EQ(t.goal.size(), 2u); // two purple blocks: D and E can be the top or the fourth
 }
 
-} // namespace
-} // namespace catplan::plan::ground
-
-#include "catplan/plan/ground/heuristics.hpp"
-#include "catplan/plan/ground/successors.hpp"
-
-namespace catplan::plan::ground {
-namespace {
 TEST(GroundHeuristics, LmCutIsAtLeastHMaxOnRandomWalks) {
     std::mt19937_64 rng(5);
     auto init = random_towers(6, rng);
@@ -80,25 +110,177 @@ TEST(GroundHeuristics, LmCutIsAtLeastHMaxOnRandomWalks) {
     RelaxedTask r(t);
     auto hmax = make_evaluator(HeuristicKind::HMax, t, r, budget);
     auto lmcut = make_evaluator(HeuristicKind::LmCut, t, r, budget);
+    int states = 0;
+    for_each_walk_state(t, 5, 20, 15, [&](const std::vector<std::uint32_t>& values, ActionId) {
+        int a = hmax->evaluate(0, values, nullptr, nullptr);
+        int b = lmcut->evaluate(0, values, nullptr, nullptr);
+        ASSERT_GE(b, a) << "state " << states;
+        ++states;
+    });
+    EXPECT_GT(states, 100);
+}
+
+std::set<std::set<std::string>> described_groups(const Task& t) {
+    std::set<std::set<std::string>> out;
+    for (const auto& g : t.mutex_groups) {
+        std::set<std::string> names;
+        for (VarId v : g) {
+            names.insert(t.describe(v));
+        }
+        out.insert(names);
+    }
+    return out;
+}
+
+TEST(MutexGroups, BlocksworldHasTheTranslatorsGroups) {
+    auto p = blocks_problem(blocks_domain(true), {"A", "B", "C"}, {{0, 2}, {1}}, {{2, 1, 0}});
+    Task t = compiled(p);
+    // The three kinds of invariant: where a block is (on another, on the table, held), what is
+    // on a block (a block, nothing, or it is held), and the hand (empty or holding one block).
+    std::set<std::set<std::string>> expected = {
+        {"HandEmpty()", "Holding(A)", "Holding(B)", "Holding(C)"}};
+    for (std::string x : {"A", "B", "C"}) {
+        std::set<std::string> where = {"Holding(" + x + ")", "OnTable(" + x + ")"};
+        std::set<std::string> top = {"Holding(" + x + ")", "Clear(" + x + ")"};
+        for (std::string y : {"A", "B", "C"}) {
+            if (y != x) {
+                where.insert("On(" + x + ", " + y + ")");
+                top.insert("On(" + y + ", " + x + ")");
+            }
+        }
+        expected.insert(where);
+        expected.insert(top);
+    }
+    EXPECT_EQ(described_groups(t), expected);
+    // The packer's groups are disjoint and cover every On and Holding atom.
+    auto packed = disjoint_groups(t.mutex_groups);
+    std::set<VarId> seen;
+    std::size_t atoms = 0;
+    for (const auto& g : packed) {
+        EXPECT_GE(g.size(), 2u);
+        for (VarId v : g) {
+            EXPECT_TRUE(seen.insert(v).second) << t.describe(v) << " is in two groups";
+        }
+        atoms += g.size();
+    }
+    EXPECT_GE(atoms, 6u + 3u);
+}
+
+// Replays random walks twice: on a value per variable, and packed; the groups hold in every
+// state reached and the packed states unpack to the same values.
+void expect_groups_hold_on_walks(const Task& t, std::uint64_t seed) {
+    std::vector<std::uint32_t> plain;
+    for_each_walk_state(t, seed, 30, 40, [&](const std::vector<std::uint32_t>& values, ActionId a) {
+        if (a == kNone) {
+            plain = t.initial;
+        } else {
+            for (const Fact& f : t.actions[a].eff) {
+                plain[f.var] = f.value;
+            }
+        }
+        for (const auto& g : t.mutex_groups) {
+            auto present =
+                std::count_if(g.begin(), g.end(), [&](VarId v) { return plain[v] == 1; });
+            ASSERT_LE(present, 1) << (a == kNone ? "initially" : "after " + t.describe_action(a));
+        }
+        ASSERT_EQ(values, plain);
+    });
+}
+
+TEST(MutexGroups, HoldOnRandomWalksAndPackedStatesMatch) {
+    for (std::uint64_t seed : {1u, 2u, 3u}) {
+        SCOPED_TRACE(seed);
+        std::mt19937_64 rng(seed);
+        auto init = random_towers(6, rng);
+        auto goal = random_towers(6, rng);
+        Task t = compiled(blocks_problem(blocks_domain(true), block_names(6), init, goal));
+        EXPECT_FALSE(t.mutex_groups.empty());
+        expect_groups_hold_on_walks(t, seed);
+    }
+    Task paper = compiled(paper_case_study());
+    expect_groups_hold_on_walks(paper, 7);
+}
+
+TEST(MutexGroups, ThirtyBlocksPackIntoFourWords) {
+    std::mt19937_64 rng(30);
+    auto init = random_towers(30, rng);
+    auto goal = random_towers(30, rng);
+    Task t = compiled(blocks_problem(blocks_domain(true), block_names(30), init, goal));
+    // 961 atoms: one bit each would take 16 words; 30 fields of 5 bits (31 atoms and none)
+    // for the blocks' positions or tops, the rest 1 or 5 bits.
     StatePacker packer(t);
-    SuccessorGenerator gen(t, packer);
-    std::vector<Word> s(packer.words()), next(packer.words());
-    std::vector<std::uint32_t> values;
-    for (int walk = 0; walk < 20; ++walk) {
-        packer.pack(t.initial, s.data());
-        for (int step = 0; step < 15; ++step) {
-            packer.unpack(s.data(), values);
-            int a = hmax->evaluate(0, values, nullptr, nullptr);
-            int b = lmcut->evaluate(0, values, nullptr, nullptr);
-            ASSERT_GE(b, a) << "walk " << walk << " step " << step;
-            std::vector<ActionId> ops;
-            gen.applicable(s.data(), ops);
-            ASSERT_FALSE(ops.empty());
-            ActionId op = ops[rng() % ops.size()];
-            ASSERT_TRUE(apply(t, packer, s.data(), op, next.data()));
-            s.swap(next);
+    EXPECT_LE(packer.words(), 4u);
+    Task plain = t;
+    plain.mutex_groups.clear();
+    EXPECT_EQ(StatePacker(plain).words(), 16u);
+}
+
+constexpr int kInf = std::numeric_limits<int>::max();
+
+// h_add or h_max by the textbook fixpoint (Bellman-Ford over the relaxed actions until nothing
+// changes), without a queue and without stopping early.
+int reference(const RelaxedTask& r, const std::vector<std::uint32_t>& state, bool max) {
+    std::vector<int> cost(r.num_props(), kInf);
+    std::vector<Prop> init;
+    r.props_of(state, init);
+    for (Prop p : init) {
+        cost[p] = 0;
+    }
+    for (bool changed = true; changed;) {
+        changed = false;
+        for (const auto& a : r.actions()) {
+            int c = 0;
+            for (Prop q : a.pre) {
+                if (cost[q] == kInf) {
+                    c = kInf;
+                    break;
+                }
+                c = max ? std::max(c, cost[q]) : c + cost[q];
+            }
+            if (c == kInf) {
+                continue;
+            }
+            for (Prop q : a.add) {
+                if (c + a.cost < cost[q]) {
+                    cost[q] = c + a.cost;
+                    changed = true;
+                }
+            }
         }
     }
+    int h = 0;
+    for (Prop g : r.goal()) {
+        if (cost[g] == kInf) {
+            return kDeadEnd;
+        }
+        h = max ? std::max(h, cost[g]) : h + cost[g];
+    }
+    return h;
 }
+
+// The Dijkstra of h_add and h_max stops when every goal proposition has popped; its values are
+// the fixpoint's, on every state of random walks (blocks of two problems and the paper's case
+// study, whose goal has two terms).
+TEST(GroundHeuristics, HAddAndHMaxStopEarlyWithTheFixpointsValues) {
+    std::vector<ProblemPtr> problems = {paper_case_study()};
+    for (std::uint64_t seed : {11u, 12u}) {
+        std::mt19937_64 rng(seed);
+        auto init = random_towers(7, rng);
+        auto goal = random_towers(7, rng);
+        problems.push_back(blocks_problem(blocks_domain(true), block_names(7), init, goal));
+    }
+    for (const auto& p : problems) {
+        Budget budget({}, Clock::now());
+        Task t = compiled(p);
+        RelaxedTask r(t);
+        auto hadd = make_evaluator(HeuristicKind::HAdd, t, r, budget);
+        auto hmax = make_evaluator(HeuristicKind::HMax, t, r, budget);
+        for_each_walk_state(t, 3, 10, 20, [&](const std::vector<std::uint32_t>& values, ActionId) {
+            ASSERT_EQ(hadd->evaluate(0, values, nullptr, nullptr), reference(r, values, false));
+            ASSERT_EQ(hmax->evaluate(0, values, nullptr, nullptr), reference(r, values, true));
+        });
+    }
+}
+
 } // namespace
 } // namespace catplan::plan::ground

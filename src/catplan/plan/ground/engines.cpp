@@ -202,18 +202,21 @@ public:
         ActionId action;
     };
 
-    LazyOpen(Space& space, const std::vector<Evaluator*>& hs, bool preferred, int weight, int bound)
+    LazyOpen(Space& space, const std::vector<Evaluator*>& hs,
+             const std::vector<Evaluator*>& preferred, int weight, int bound)
         : space_(space),
           hs_(hs),
-          preferred_(preferred),
+          preferred_(!preferred.empty()),
           weight_(weight),
           bound_(bound),
-          per_h_(preferred ? 2 : 1),
+          per_h_(preferred_ ? 2 : 1),
           best_(hs.size(), kDeadEnd),
           values_(hs.size(), 0) {
-        for (std::size_t i = 0; i < hs.size(); ++i) {
+        for (Evaluator* h : hs) {
+            gives_preferred_.push_back(std::find(preferred.begin(), preferred.end(), h) !=
+                                       preferred.end());
             subs_.push_back({});
-            if (preferred) {
+            if (preferred_) {
                 subs_.push_back({{}, 0, true});
             }
         }
@@ -225,7 +228,7 @@ public:
         pref_.clear();
         for (std::size_t i = 0; i < hs_.size(); ++i) {
             values_[i] = evaluate(space_, *hs_[i], parent, a, s, is_new, &ops_,
-                                  preferred_ ? &pref_ : nullptr);
+                                  gives_preferred_[i] ? &pref_ : nullptr);
             if (values_[i] == kDeadEnd) {
                 space_.node(s).dead = true;
                 ++space_.stats.evaluated;
@@ -304,14 +307,15 @@ private:
     int weight_, bound_;
     std::size_t per_h_;
     std::vector<Sub> subs_;
+    std::vector<bool> gives_preferred_; // per evaluator: its preferred operators count
     std::vector<int> best_, values_;
     std::vector<ActionId> ops_, pref_;
 };
 
 } // namespace
 
-EngineResult lazy_best_first(Space& space, const std::vector<Evaluator*>& hs, bool preferred,
-                             int weight, int bound) {
+EngineResult lazy_best_first(Space& space, const std::vector<Evaluator*>& hs,
+                             const std::vector<Evaluator*>& preferred, int weight, int bound) {
     LazyOpen open(space, hs, preferred, weight, bound);
     bool path_dependent =
         std::any_of(hs.begin(), hs.end(), [](const Evaluator* h) { return h->path_dependent(); });

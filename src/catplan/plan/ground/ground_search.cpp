@@ -29,6 +29,13 @@ bool prefers(HeuristicKind h) {
     return h == HeuristicKind::HFF || h == HeuristicKind::LmCount;
 }
 
+// The evaluators whose preferred operators a configuration uses. LAMA takes them from h_FF only:
+// the landmark count's (every applicable action achieving a needed landmark) are so many that the
+// preferred lists stop telling the search anything (Fast Downward's lama-first: pref=false).
+bool gives_preferred(HeuristicKind h, SearchKind search) {
+    return search == SearchKind::Lama ? h == HeuristicKind::HFF : prefers(h);
+}
+
 // The evaluators of a configuration, made anew (a path-dependent one belongs to one search).
 class Evaluators {
 public:
@@ -42,14 +49,18 @@ public:
         for (auto k : kinds_) {
             owned_.push_back(make_evaluator(k, task, relaxed, budget));
             raw_.push_back(owned_.back().get());
+            if (gives_preferred(k, o.search)) {
+                preferred_.push_back(raw_.back());
+            }
         }
     }
 
     const std::vector<Evaluator*>& all() const { return raw_; }
 
-    Evaluator& first() { return *raw_.front(); }
+    /// The evaluators whose preferred operators the lazy search uses.
+    const std::vector<Evaluator*>& preferred() const { return preferred_; }
 
-    bool preferred() const { return std::any_of(kinds_.begin(), kinds_.end(), prefers); }
+    Evaluator& first() { return *raw_.front(); }
 
     std::string names() const {
         std::string out;
@@ -59,10 +70,24 @@ public:
         return out;
     }
 
+    /// ", preferred operators" and, when not every evaluator gives them, whose.
+    std::string preferred_names() const {
+        if (preferred_.empty() || preferred_.size() == raw_.size()) {
+            return preferred_.empty() ? "" : ", preferred operators";
+        }
+        std::string whose;
+        for (std::size_t i = 0; i < raw_.size(); ++i) {
+            if (std::find(preferred_.begin(), preferred_.end(), raw_[i]) != preferred_.end()) {
+                whose += (whose.empty() ? "" : " and ") + std::string(to_string(kinds_[i]));
+            }
+        }
+        return ", preferred operators of " + whose;
+    }
+
 private:
     std::vector<HeuristicKind> kinds_;
     std::vector<std::unique_ptr<Evaluator>> owned_;
-    std::vector<Evaluator*> raw_;
+    std::vector<Evaluator*> raw_, preferred_;
 };
 
 std::string describe_config(const SearchOptions& o, const Evaluators& e) {
@@ -75,8 +100,7 @@ std::string describe_config(const SearchOptions& o, const Evaluators& e) {
         return fmt::format("eager greedy best-first, {}", e.names());
     case SearchKind::LazyGreedy:
     case SearchKind::Lama:
-        return fmt::format("lazy greedy best-first, {}{}", e.names(),
-                           e.preferred() ? ", preferred operators" : "");
+        return fmt::format("lazy greedy best-first, {}{}", e.names(), e.preferred_names());
     }
     CATPLAN_UNREACHABLE("search kind");
 }
@@ -90,7 +114,7 @@ public:
     SearchStatus run() {
         Evaluators e(task_, relaxed_, budget_, options_);
         r_.config = describe_config(options_, e);
-        r_.stats.setup_seconds = budget_.elapsed();
+        r_.stats.end_setup(budget_);
         EngineResult first = search(e, 0, 0);
         if (first.status != SearchStatus::Solved) {
             return first.status;
@@ -132,14 +156,14 @@ private:
         switch (options_.search) {
         case SearchKind::BreadthFirst:
             out = weight == 0 ? breadth_first(space)
-                              : lazy_best_first(space, e.all(), false, weight, bound);
+                              : lazy_best_first(space, e.all(), {}, weight, bound);
             break;
         case SearchKind::AStar:
             out = eager_best_first(space, e.first(), true);
             break;
         case SearchKind::GreedyBestFirst:
             out = weight == 0 ? eager_best_first(space, e.first(), false)
-                              : lazy_best_first(space, e.all(), false, weight, bound);
+                              : lazy_best_first(space, e.all(), {}, weight, bound);
             break;
         case SearchKind::LazyGreedy:
         case SearchKind::Lama:
@@ -175,8 +199,9 @@ void fill_stats(SearchResult& r, Budget& budget) {
     (void)budget.check();
     r.stats.memory = budget.resident();
     r.stats.peak_memory = budget.peak_bytes();
+    r.stats.cpu_seconds = Budget::cpu_seconds();
     if (r.stats.setup_seconds == 0) {
-        r.stats.setup_seconds = r.stats.seconds;
+        r.stats.end_setup(budget); // stopped during the set-up
     }
 }
 
@@ -221,13 +246,21 @@ GroundOutcome ground_search(const ProblemPtr& problem, const SearchOptions& opti
         r.optimal = false;
     }
     if (r.status == SearchStatus::Solved) {
-        auto plan = to_dpo_plan(*task, runner.best());
+        std::optional<ACSet> last;
+        auto plan = to_dpo_plan(*task, runner.best(), &last);
         if (!plan) {
             out.rejected = plan.error();
-        } else if (auto v = validate_plan(*problem, *plan); !v.valid) {
-            out.rejected = v.reason;
-        } else {
+        } else if (auto v = validate_plan(*problem, *plan); v.valid) {
             r.plan = std::move(*plan);
+        } else if (v.ambiguous && (!problem->goal || embed_goal(*problem->goal, *last))) {
+            // The replay applied each step with the match the search chose (each checked by
+            // match_problem) and reached the goal; only the plan's text leaves a choice.
+            r.caveat = fmt::format("the steps' arguments do not say which match the search "
+                                   "applied, so `catplan validate` rejects this plan: {}",
+                                   v.reason);
+            r.plan = std::move(*plan);
+        } else {
+            out.rejected = v.reason;
         }
     }
     fill_stats(r, budget);

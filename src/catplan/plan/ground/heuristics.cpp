@@ -67,18 +67,14 @@ public:
 
     void push(int cost, Prop p) {
         auto c = static_cast<std::size_t>(cost);
-        if (c < kBuckets) {
-            if (c >= buckets_.size()) {
-                buckets_.resize(std::min(kBuckets, 2 * c + 16));
-            }
+        if (c < buckets_.size()) [[likely]] {
             buckets_[c].push_back(p);
             used_ = std::max(used_, c + 1);
             current_ = std::min(current_, c);
+            ++size_;
         } else {
-            heap_.push_back({cost, p});
-            std::push_heap(heap_.begin(), heap_.end(), std::greater<>());
+            push_slow(cost, p);
         }
-        ++size_;
     }
 
     bool empty() const { return size_ == 0; }
@@ -100,25 +96,78 @@ public:
     }
 
 private:
+    [[gnu::noinline]] void push_slow(int cost, Prop p) {
+        auto c = static_cast<std::size_t>(cost);
+        if (c < kBuckets) {
+            buckets_.resize(std::min(kBuckets, 2 * c + 16));
+            push(cost, p);
+            return;
+        }
+        heap_.push_back({cost, p});
+        std::push_heap(heap_.begin(), heap_.end(), std::greater<>());
+        ++size_;
+    }
+
     static constexpr std::size_t kBuckets = 1 << 14;
     std::vector<std::vector<Prop>> buckets_;
     std::vector<std::pair<int, Prop>> heap_;
     std::size_t current_ = 0, used_ = 0, size_ = 0;
 };
 
-// h_add, h_max and h_FF: a generalised Dijkstra over the propositions from the state's.
+// The relaxed task's actions in flat arrays (offsets into one array of propositions each), so
+// that the exploration, which touches every reachable action per state, reads memory in order.
+struct FlatRelaxation {
+    explicit FlatRelaxation(const RelaxedTask& r) {
+        const auto& actions = r.actions();
+        add_begin.reserve(actions.size() + 1);
+        for (const auto& a : actions) {
+            add_begin.push_back(static_cast<std::uint32_t>(adds.size()));
+            adds.insert(adds.end(), a.add.begin(), a.add.end());
+            cost.push_back(a.cost);
+            num_pre.push_back(static_cast<std::uint32_t>(a.pre.size()));
+        }
+        add_begin.push_back(static_cast<std::uint32_t>(adds.size()));
+        pre_of_begin.reserve(r.num_props() + 1);
+        for (Prop p = 0; p < r.num_props(); ++p) {
+            pre_of_begin.push_back(static_cast<std::uint32_t>(pre_of.size()));
+            pre_of.insert(pre_of.end(), r.pre_of(p).begin(), r.pre_of(p).end());
+        }
+        pre_of_begin.push_back(static_cast<std::uint32_t>(pre_of.size()));
+        is_goal.assign(r.num_props(), 0);
+        for (Prop g : r.goal()) {
+            is_goal[g] = 1;
+        }
+        needed.assign(r.num_props(), 0);
+        for (Prop p = 0; p < r.num_props(); ++p) {
+            needed[p] = is_goal[p] != 0 || pre_of_begin[p] != pre_of_begin[p + 1] ? 1 : 0;
+        }
+    }
+
+    std::vector<std::uint32_t> add_begin, pre_of_begin, num_pre, pre_of;
+    std::vector<Prop> adds;
+    std::vector<int> cost;
+    std::vector<char> is_goal;
+    std::vector<char> needed; // a goal or a precondition (an absent atom is neither)
+};
+
+// h_add, h_max and h_FF: a generalised Dijkstra over the propositions from the state's, stopped
+// when every goal proposition has its final cost (as Fast Downward's relaxation heuristics).
 class Relaxation final : public Evaluator {
 public:
     enum class Mode { Add, Max, FF };
 
     Relaxation(const RelaxedTask& r, Mode mode, Budget& budget)
-        : r_(r), mode_(mode), budget_(budget) {}
+        : r_(r), flat_(r), mode_(mode), budget_(budget) {
+        goals_.assign(r.goal().begin(), r.goal().end());
+        std::sort(goals_.begin(), goals_.end());
+        goals_.erase(std::unique(goals_.begin(), goals_.end()), goals_.end());
+    }
 
     int evaluate(StateId, const std::vector<std::uint32_t>& state, const std::vector<ActionId>*,
                  std::vector<ActionId>* preferred) override {
         explore(state);
         int h = 0;
-        for (Prop g : r_.goal()) {
+        for (Prop g : goals_) {
             if (cost_[g] == kInf) {
                 return kDeadEnd;
             }
@@ -134,32 +183,51 @@ public:
 
 private:
     void explore(const std::vector<std::uint32_t>& state) {
-        const auto& actions = r_.actions();
+        const std::size_t num_actions = flat_.cost.size();
         cost_.assign(r_.num_props(), kInf);
         supporter_.assign(r_.num_props(), kNone);
-        unsat_.resize(actions.size());
-        acc_.assign(actions.size(), 0);
+        unsat_.assign(flat_.num_pre.begin(), flat_.num_pre.end());
+        acc_.assign(num_actions, 0);
         queue_.clear();
         r_.props_of(state, init_);
         for (Prop p : init_) {
             cost_[p] = 0;
-            queue_.push(0, p);
-        }
-        for (std::uint32_t a = 0; a < actions.size(); ++a) {
-            unsat_[a] = static_cast<std::uint32_t>(actions[a].pre.size());
+            if (flat_.needed[p] != 0) {
+                queue_.push(0, p); // popping it would fire nothing
+            }
         }
         for (std::uint32_t a : r_.unconditional()) {
             fire(a);
         }
-        while (!queue_.empty()) {
+        if (mode_ == Mode::Max) {
+            dijkstra<true>();
+        } else {
+            dijkstra<false>();
+        }
+    }
+
+    // Pops propositions until every goal has its cost; an action fires when its last
+    // precondition pops, at its cost plus the max (h_max) or sum (h_add) of theirs.
+    template <bool Max>
+    void dijkstra() {
+        std::size_t open_goals = goals_.size();
+        std::uint32_t pops = 0;
+        while (!queue_.empty() && open_goals > 0) {
             auto [c, p] = queue_.pop();
             if (c > cost_[p]) {
                 continue;
             }
-            budget_.poll();
-            for (std::uint32_t a : r_.pre_of(p)) {
-                acc_[a] =
-                    mode_ == Mode::Max ? std::max(acc_[a], c) : std::min(acc_[a] + c, kDeadEnd);
+            if ((++pops & 1023) == 0) {
+                budget_.poll(); // the clock is read every 64th poll: per 65,536 propositions
+            }
+            if (flat_.is_goal[p]) {
+                --open_goals; // the goals are distinct and each pops once at its final cost
+            }
+            const std::uint32_t* it = flat_.pre_of.data() + flat_.pre_of_begin[p];
+            const std::uint32_t* end = flat_.pre_of.data() + flat_.pre_of_begin[p + 1];
+            for (; it != end; ++it) {
+                std::uint32_t a = *it;
+                acc_[a] = Max ? std::max(acc_[a], c) : std::min(acc_[a] + c, kDeadEnd);
                 if (--unsat_[a] == 0) {
                     fire(a);
                 }
@@ -168,9 +236,11 @@ private:
     }
 
     void fire(std::uint32_t a) {
-        const auto& act = r_.actions()[a];
-        int c = act.cost + acc_[a];
-        for (Prop q : act.add) {
+        int c = flat_.cost[a] + acc_[a];
+        const Prop* it = flat_.adds.data() + flat_.add_begin[a];
+        const Prop* end = flat_.adds.data() + flat_.add_begin[a + 1];
+        for (; it != end; ++it) {
+            Prop q = *it;
             if (c < cost_[q]) {
                 cost_[q] = c;
                 supporter_[q] = a;
@@ -179,12 +249,13 @@ private:
         }
     }
 
-    // The relaxed plan of the best supporters; its actions applicable now are preferred.
+    // The relaxed plan of the best supporters; its actions applicable now are preferred. Every
+    // proposition it visits costs at most the goal's, so its cost and supporter are final.
     int relaxed_plan(std::vector<ActionId>* preferred) {
         const auto& actions = r_.actions();
         in_plan_.assign(actions.size(), 0);
         marked_.assign(r_.num_props(), 0);
-        stack_.assign(r_.goal().begin(), r_.goal().end());
+        stack_.assign(goals_.begin(), goals_.end());
         int h = 0;
         while (!stack_.empty()) {
             Prop p = stack_.back();
@@ -213,8 +284,10 @@ private:
     }
 
     const RelaxedTask& r_;
+    FlatRelaxation flat_;
     Mode mode_;
     Budget& budget_;
+    std::vector<Prop> goals_;
     std::vector<int> cost_, acc_;
     std::vector<std::uint32_t> supporter_, unsat_;
     std::vector<Prop> init_, stack_;

@@ -1,6 +1,7 @@
 #include "catplan/plan/ground/packed.hpp"
 
 #include "catplan/base/hash.hpp"
+#include "catplan/plan/ground/mutexes.hpp"
 
 #include <algorithm>
 #include <bit>
@@ -9,17 +10,32 @@
 namespace catplan::plan::ground {
 
 StatePacker::StatePacker(const Task& task) {
-    // Widest variables first, each into the first word with room (first fit decreasing).
-    std::vector<std::pair<std::uint32_t, VarId>> by_width;
+    // Fields: one per mutex group, one per other variable, each with its variables.
+    std::vector<std::vector<VarId>> fields = disjoint_groups(task.mutex_groups);
+    std::vector<char> grouped(task.vars.size(), 0);
+    for (const auto& g : fields) {
+        for (VarId v : g) {
+            CATPLAN_ASSERT(grouped[v] == 0, "mutex groups are disjoint");
+            grouped[v] = 1;
+        }
+    }
     for (VarId v = 0; v < task.vars.size(); ++v) {
-        std::uint32_t n = std::max<std::uint32_t>(task.vars[v].size(), 2);
-        by_width.emplace_back(std::bit_width(n - 1), v);
+        if (grouped[v] == 0) {
+            fields.push_back({v});
+        }
+    }
+    // Widest fields first, each into the first word with room (first fit decreasing).
+    std::vector<std::pair<std::uint32_t, std::size_t>> by_width;
+    for (std::size_t i = 0; i < fields.size(); ++i) {
+        const auto& f = fields[i];
+        auto n = f.size() > 1 ? static_cast<std::uint32_t>(f.size()) + 1 : task.vars[f[0]].size();
+        by_width.emplace_back(std::bit_width(std::max<std::uint32_t>(n, 2) - 1), i);
     }
     std::stable_sort(by_width.begin(), by_width.end(),
                      [](const auto& a, const auto& b) { return a.first > b.first; });
     slots_.resize(task.vars.size());
     std::vector<std::uint32_t> used; // bits used per word
-    for (auto [bits, v] : by_width) {
+    for (auto [bits, i] : by_width) {
         CATPLAN_ASSERT(bits <= 32, "a variable with more than 2^32 values");
         std::uint32_t w = 0;
         while (w < used.size() && used[w] + bits > 64) {
@@ -28,7 +44,10 @@ StatePacker::StatePacker(const Task& task) {
         if (w == used.size()) {
             used.push_back(0);
         }
-        slots_[v] = {w, used[w], (Word{1} << bits) - 1};
+        const auto& f = fields[i];
+        for (std::uint32_t k = 0; k < f.size(); ++k) {
+            slots_[f[k]] = {w, used[w], (Word{1} << bits) - 1, f.size() > 1 ? k + 1 : 0};
+        }
         used[w] += bits;
     }
     words_ = std::max<std::uint32_t>(1, static_cast<std::uint32_t>(used.size()));
@@ -37,6 +56,9 @@ StatePacker::StatePacker(const Task& task) {
 void StatePacker::pack(const std::vector<std::uint32_t>& values, Word* s) const {
     std::fill(s, s + words_, Word{0});
     for (VarId v = 0; v < values.size(); ++v) {
+        if (values[v] != 0 && slots_[v].member != 0) {
+            CATPLAN_ASSERT(field(s, slots_[v]) == 0, "two atoms of a mutex group present");
+        }
         set(s, v, values[v]);
     }
 }

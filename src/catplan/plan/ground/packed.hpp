@@ -1,7 +1,9 @@
 #pragma once
 // Packed states of a ground task and the registry that stores each once (as Fast Downward's
-// IntPacker and StateRegistry do): a variable of n values takes ceil(log2 n) bits, variables are
-// packed into 64-bit words without crossing a word boundary, and states are compared exactly.
+// IntPacker and StateRegistry do): a variable of n values takes ceil(log2 n) bits, a mutex group
+// of n atoms (mutexes.hpp) one field of ceil(log2(n + 1)) bits holding which atom is present (0:
+// none), fields are packed into 64-bit words without crossing a word boundary, and states are
+// compared exactly.
 //
 // The registry keeps states in segments of fixed size and an open-addressing table of ids; before
 // the table grows it asks the budget whether the new table fits in the memory limit (limits.hpp),
@@ -26,15 +28,24 @@ public:
 
     std::uint32_t get(const Word* s, VarId v) const {
         const Slot& sl = slots_[v];
-        return static_cast<std::uint32_t>((s[sl.word] >> sl.shift) & sl.mask);
+        std::uint32_t raw = field(s, sl);
+        return sl.member == 0 ? raw : static_cast<std::uint32_t>(raw == sl.member);
     }
 
+    /// Sets v's value; for an atom of a mutex group, absent leaves another atom present.
     void set(Word* s, VarId v, std::uint32_t value) const {
         const Slot& sl = slots_[v];
-        s[sl.word] = (s[sl.word] & ~(sl.mask << sl.shift)) | (Word{value} << sl.shift);
+        std::uint32_t raw = value;
+        if (sl.member != 0) {
+            if (value == 0 && field(s, sl) != sl.member) {
+                return;
+            }
+            raw = value == 0 ? 0 : sl.member;
+        }
+        s[sl.word] = (s[sl.word] & ~(sl.mask << sl.shift)) | (Word{raw} << sl.shift);
     }
 
-    /// Packs a value per variable.
+    /// Packs a value per variable (at most one atom of a mutex group present).
     void pack(const std::vector<std::uint32_t>& values, Word* s) const;
     /// Unpacks into a value per variable.
     void unpack(const Word* s, std::vector<std::uint32_t>& values) const;
@@ -46,7 +57,12 @@ private:
     struct Slot {
         std::uint32_t word = 0, shift = 0;
         Word mask = 0;
+        std::uint32_t member = 0; // an atom of a mutex group: its index in the group + 1
     };
+
+    static std::uint32_t field(const Word* s, const Slot& sl) {
+        return static_cast<std::uint32_t>((s[sl.word] >> sl.shift) & sl.mask);
+    }
 
     std::vector<Slot> slots_;
     std::uint32_t words_ = 0;

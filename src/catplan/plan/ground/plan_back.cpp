@@ -75,6 +75,8 @@ public:
         return st;
     }
 
+    const ACSet& state() const { return x_; }
+
 private:
     void place(ObjectId id, Part p) {
         where_[id] = p;
@@ -234,7 +236,8 @@ private:
 
 } // namespace
 
-Result<Plan> to_dpo_plan(const Task& task, const std::vector<ActionId>& plan) {
+Result<Plan> to_dpo_plan(const Task& task, const std::vector<ActionId>& plan,
+                         std::optional<ACSet>* last) {
     Replay replay(task);
     Plan out;
     for (std::size_t i = 0; i < plan.size(); ++i) {
@@ -244,6 +247,9 @@ Result<Plan> to_dpo_plan(const Task& task, const std::vector<ActionId>& plan) {
                 fmt::format("step {} {}: {}", i + 1, task.describe_action(plan[i]), st.error()));
         }
         out.steps.push_back(std::move(*st));
+    }
+    if (last != nullptr) {
+        *last = replay.state();
     }
     return out;
 }

@@ -7,10 +7,14 @@
 #include "catplan/base/result.hpp"
 #include "catplan/plan/ground/task.hpp"
 
+#include <optional>
+
 namespace catplan::plan::ground {
 
 /// The steps of a ground plan, or why a step does not apply to the C-set (a bug in the
-/// compiler: the caller validates the result and falls back).
-Result<Plan> to_dpo_plan(const Task& task, const std::vector<ActionId>& plan);
+/// compiler: the caller validates the result and falls back); the state after the last step in
+/// *last when it is not null.
+Result<Plan> to_dpo_plan(const Task& task, const std::vector<ActionId>& plan,
+                         std::optional<ACSet>* last = nullptr);
 
 } // namespace catplan::plan::ground

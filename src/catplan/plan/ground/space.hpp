@@ -89,11 +89,11 @@ EngineResult eager_best_first(Space& space, Evaluator& h, bool astar);
 
 /// Lazy best-first search with deferred evaluation (successors enter the open lists with their
 /// parent's values and are evaluated when taken): greedy when weight is 0, else weighted A* with
-/// f = g + weight * h; one open list per evaluator, and with preferred operators one more each
-/// holding only preferred successors, taken in turn, the preferred ones boosted by 1000 whenever
-/// an evaluator's best value improves (Fast Downward's lazy_greedy / lazy_wastar). Successors
-/// with g + 1 >= bound are pruned (0: no bound).
-EngineResult lazy_best_first(Space& space, const std::vector<Evaluator*>& hs, bool preferred,
-                             int weight, int bound);
+/// f = g + weight * h; one open list per evaluator, and when `preferred` (evaluators of hs whose
+/// preferred operators count) is not empty one more each holding only preferred successors, taken
+/// in turn, the preferred ones boosted by 1000 whenever an evaluator's best value improves (Fast
+/// Downward's lazy_greedy / lazy_wastar). Successors with g + 1 >= bound are pruned (0: no bound).
+EngineResult lazy_best_first(Space& space, const std::vector<Evaluator*>& hs,
+                             const std::vector<Evaluator*>& preferred, int weight, int bound);
 
 } // namespace catplan::plan::ground

@@ -133,6 +133,9 @@ struct Task {
     /// The goal: a state satisfies it when every fact of one term holds.
     std::vector<std::vector<Fact>> goal;
     std::vector<Action> actions;
+    /// Groups of atom variables of which at most one is present in every reachable state
+    /// (mutexes.hpp); the state packer stores disjoint ones in one field each.
+    std::vector<std::vector<VarId>> mutex_groups;
 
     /// "isHolding(gripper)", "On(E, D)", "Block#1 exists": for messages and tests.
     std::string describe(VarId var) const;
