@@ -25,6 +25,10 @@ bool report(Session& s, std::ostream& err) {
     return errors;
 }
 
+int input_error(const Session& s) {
+    return s.sink.only_unsupported() ? kUnsupported : kBadInput;
+}
+
 // Loads a file and its imports; nullopt (with every diagnostic printed) when it has errors.
 std::optional<lang::Module> load(Session& s, const std::string& file, std::ostream& err) {
     auto m = lang::load_file(file, s.sources, s.sink);

@@ -39,6 +39,10 @@ struct Session {
 /// were errors among them.
 bool report(Session& s, std::ostream& err);
 
+/// The exit code of input that did not load: kUnsupported when every error the session met is
+/// about valid input catplan does not support (PDDL's `:conditional-effects`), else kBadInput.
+int input_error(const Session& s);
+
 /// Loads a file and its imports; nullopt (with every diagnostic printed) when it has errors.
 std::optional<lang::Module> load(Session& s, const std::string& file, std::ostream& err);
 

@@ -67,7 +67,7 @@ struct LiftedAction {
         if (s.constant && t.constant) {
             return false;
         }
-        if (!domain->is_subtype(s.type, t.type) && !domain->is_subtype(t.type, s.type)) {
+        if (!domain->may_share(s.type, t.type)) {
             return false;
         }
         return distinct.count({std::min(x, y), std::max(x, y)}) == 0;
@@ -347,8 +347,9 @@ private:
         }
     }
 
-    /// Whether term i may join its block: types on a chain, at most one constant, a constant's
-    /// type below every parameter's type, and the equality literals so far respected.
+    /// Whether term i may join its block: types an object can have at once, at most one
+    /// constant, a constant's type below every parameter's type, and the equality literals so
+    /// far respected.
     bool fits(std::size_t i, const std::vector<std::size_t>& block) const {
         for (std::size_t j = 0; j < i; ++j) {
             if (block[j] != block[i]) {
@@ -362,7 +363,7 @@ private:
                 (t.constant && !d_.is_subtype(t.type, s.type))) {
                 return false;
             }
-            if (!d_.is_subtype(s.type, t.type) && !d_.is_subtype(t.type, s.type)) {
+            if (!d_.may_share(s.type, t.type)) {
                 return false;
             }
         }

@@ -84,6 +84,9 @@ struct TransferOptions {
     /// then also asks that it be satisfied in the last target state, and goal satisfaction is
     /// measured for it. Null to judge by Δ_F(G) alone.
     std::shared_ptr<const ACSet> goal;
+    /// Conditions on the intended goal's embedding (its negative goals, plan::Problem's
+    /// goal_conditions), each n : goal -> N.
+    std::vector<rewrite::ApplicationCondition> goal_conditions;
     /// The intended goal's name, for the verdict's words ("the intended goal Sandwich is not
     /// satisfied").
     std::string goal_name;
@@ -143,6 +146,8 @@ struct TransferResult {
     MigratedDomain target_domain;
     std::shared_ptr<const ACSet> target_initial; ///< Y_0 = Δ_F(I)
     std::shared_ptr<const ACSet> target_goal;    ///< Δ_F(G)
+    /// Δ_F of the source problem's goal conditions, each Δ_F(n) : Δ_F(G) -> Δ_F(N).
+    std::vector<rewrite::ApplicationCondition> target_goal_conditions;
     /// The steps transferred (all of them, or those before the one the verdict's failed_step
     /// names).
     std::vector<StepTransfer> steps;
