@@ -342,6 +342,7 @@ transfer::TransferOptions transfer_options(const TransferArgs& a, const Transfer
     options.rename_by_type = a.rename_by_type;
     // The verdict is about the goal intended in the target domain, when one is given.
     options.goal = in.target_goal;
+    options.goal_conditions = in.target_goal_conditions;
     options.goal_name = in.pddl && a.goal.empty() ? a.target_problem : a.goal;
     // PDDL inputs: the target domain's own actions carry the steps out.
     options.target_actions = in.pddl ? in.pddl->actions : nullptr;

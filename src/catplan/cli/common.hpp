@@ -159,6 +159,8 @@ struct TransferInputs {
     plan::ProblemPtr problem;
     plan::Plan plan;
     std::shared_ptr<const acset::ACSet> target_goal;
+    /// Conditions on target_goal's embedding (a PDDL target problem's negative goals).
+    std::vector<rewrite::ApplicationCondition> target_goal_conditions;
     /// When --problem is a PDDL file: the PDDL side of the inputs (pddl_transfer.hpp).
     std::shared_ptr<const PddlTransfer> pddl;
 };

@@ -173,6 +173,16 @@ int cmd_pddl_export(const ExportArgs& a, std::ostream& out, std::ostream& err) {
         }
         domain = d->domain;
     }
+    if (problem != nullptr && !problem->goal_conditions.empty()) {
+        // PDDL can say a negative goal; this export does not write one (nor migrate it).
+        for (const auto& c : problem->goal_conditions) {
+            s.sink.unsupported(c.range, fmt::format("the negative goal {} of problem {}: catplan's "
+                                                    "PDDL export does not write goal conditions",
+                                                    c.name, problem->name));
+        }
+        report(s, err);
+        return kUnsupported;
+    }
     if (!a.map.empty()) {
         auto migrated = migrate_for_export(*m, a, domain, problem, err);
         if (!migrated) {
@@ -240,7 +250,7 @@ nlohmann::json ipc_validation_json(const Session& s, const pddl::Import& im,
 /// the search's "optimal" holds for it: the planner counts every step as 1 (docs/planner.md).
 std::string cost_summary(const pddl::PlanCost& cost, bool written, bool optimal) {
     // The plan's own last line says its cost, unless the plan went to a file.
-    std::string out = written ? "; plan " + pddl::cost_line(cost).substr(2) : "";
+    std::string out = written ? "; plan cost: " + pddl::describe_cost(cost) + "\n" : "";
     if (!cost.unit && optimal) {
         out += "; the search counted every step as 1: the plan is shortest, its cost may not be "
                "the least\n";
@@ -289,7 +299,7 @@ int pddl_validate(const std::vector<std::string>& files, bool json, std::ostream
                            v.cost.unit ? "" : fmt::format("   cost {}", v.cost.steps[i]));
     }
     if (v.valid) {
-        out << "valid: goal reached\n" << pddl::cost_line(v.cost).substr(2);
+        out << "valid: goal reached\nplan cost: " << pddl::describe_cost(v.cost) << "\n";
         return kOk;
     }
     std::string at = v.failed_step ? where(s, (*plan)[*v.failed_step].range) : "";

@@ -15,12 +15,13 @@ bool unit_cost(const Domain& d, const Problem& p) {
 }
 
 Result<std::int64_t> step_cost(const Domain& d, const Problem& p, const IpcStep& s) {
+    const Action* a = d.find_action(s.action);
+    if (a == nullptr || a->params.size() != s.args.size()) {
+        return fail(fmt::format("it is no step of domain {}", d.name));
+    }
     if (!p.metric) {
         return std::int64_t{1};
     }
-    const Action* a = d.find_action(s.action);
-    CATPLAN_ASSERT(a != nullptr && a->params.size() == s.args.size(),
-                   "a step's cost is asked of a step that fits the domain");
     std::int64_t total = 0;
     for (const auto& c : a->cost) {
         std::int64_t value = c.number;
@@ -56,6 +57,13 @@ PlanCost plan_cost(const Domain& d, const Problem& p, const IpcPlan& plan) {
         out.total += *c;
     }
     return out;
+}
+
+std::string describe_cost(const PlanCost& cost) {
+    if (!cost.undefined.empty()) {
+        return "undefined: " + cost.undefined;
+    }
+    return fmt::format("{} ({} cost)", cost.total, cost.unit ? "unit" : "general");
 }
 
 std::string cost_line(const PlanCost& cost) {

@@ -35,13 +35,18 @@ struct PlanCost {
 /// Whether every action of the problem costs 1: no metric, or each action's cost is 1.
 bool unit_cost(const Domain& d, const Problem& p);
 
-/// The cost of a step whose action and arguments fit the domain, or why it has none.
+/// The cost of a step, or why it has none (a function's value the problem does not give, or an
+/// action the domain does not have or with another number of arguments).
 Result<std::int64_t> step_cost(const Domain& d, const Problem& p, const IpcStep& s);
 
-/// The cost of each step and of the plan (steps that fit the domain).
+/// The cost of each step and of the plan, up to the first step without one.
 PlanCost plan_cost(const Domain& d, const Problem& p, const IpcPlan& plan);
 
-/// "; cost = 12 (general cost)", "; cost = 7 (unit cost)", or "; cost undefined: ...".
+/// "12 (general cost)", "7 (unit cost)", or "undefined: step 3 ...".
+std::string describe_cost(const PlanCost& cost);
+
+/// The last line of an IPC plan: "; cost = 12 (general cost)", "; cost = 7 (unit cost)", or
+/// "; cost undefined: step 3 ...".
 std::string cost_line(const PlanCost& cost);
 
 } // namespace catplan::pddl

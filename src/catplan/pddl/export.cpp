@@ -394,6 +394,10 @@ Result<std::string> write_action(const Schema& s, const Reading& rd,
     for (const auto& f : a.del) {
         eff.push_back("(not " + f + ")");
     }
+    // The action's cost (its variants share it): a constant, as :action-costs writes it.
+    if (const auto& cost = group.front()->cost; cost && cost->constant != 0) {
+        eff.push_back(fmt::format("(increase (total-cost) {})", cost->constant));
+    }
     std::string params;
     for (const auto& [v, t] : a.params) {
         params += fmt::format("{}{} - {}", params.empty() ? "" : " ", v, t);
@@ -488,7 +492,14 @@ Result<std::string> export_domain(const plan::Domain& domain) {
     }
     std::string actions;
     std::set<std::string> constants;
+    bool costs = false;
     for (const auto& group : group_rules(domain)) {
+        if (const auto& c = group.front()->cost; c && !c->depends_on.empty()) {
+            return fail(fmt::format("not expressible by catplan's export: the cost of {} is {}, "
+                                    "a value each problem gives, which the export does not write",
+                                    group.front()->name, c->depends_on));
+        }
+        costs = costs || group.front()->cost.has_value();
         auto a = write_action(s, *rd, group, constants);
         if (!a) {
             return fail(a.error());
@@ -501,16 +512,24 @@ Result<std::string> export_domain(const plan::Domain& domain) {
                            fmt::join(rd->dropped, ", "));
     }
     out += fmt::format("(define (domain {})\n", pddl_name(domain.name, "d"));
-    out += "  (:requirements :strips :typing :negative-preconditions :equality)\n";
+    out += fmt::format("  (:requirements :strips :typing :negative-preconditions :equality{})\n",
+                       costs ? " :action-costs" : "");
     out += fmt::format("  (:types{})\n", write_types(s, *rd));
     if (!constants.empty()) {
         out += fmt::format("  (:constants {})\n", fmt::join(constants, " "));
     }
-    out += "  (:predicates\n" + write_predicates(s, *rd) + "  )\n" + actions + ")\n";
+    out += "  (:predicates\n" + write_predicates(s, *rd) + "  )\n";
+    out += costs ? "  (:functions (total-cost) - number)\n" : "";
+    out += actions + ")\n";
     return out;
 }
 
 Result<std::string> export_problem(const plan::Problem& problem) {
+    if (!problem.goal_conditions.empty()) {
+        return fail(fmt::format("not expressible by catplan's export: the goal's condition {} "
+                                "(a negative goal), which the export does not write",
+                                problem.goal_conditions.front().name));
+    }
     const Schema& s = *problem.domain->schema;
     auto rd = read_schema(s);
     if (!rd) {
@@ -558,8 +577,14 @@ Result<std::string> export_problem(const plan::Problem& problem) {
     out += fmt::format("(define (problem {})\n  (:domain {})\n", pddl_name(problem.name, "p"),
                        pddl_name(problem.domain->name, "d"));
     out += fmt::format("  (:objects {})\n", fmt::join(objects, " "));
+    bool costs = std::any_of(problem.domain->rules.begin(), problem.domain->rules.end(),
+                             [](const auto& r) { return r->cost.has_value(); });
+    if (costs) {
+        facts->emplace_back("(= (total-cost) 0)");
+    }
     out += fmt::format("  (:init {})\n", fmt::join(*facts, "\n         "));
-    out += fmt::format("  (:goal {}))\n", goals->empty() ? "(and)" : conjunction(*goals));
+    out += fmt::format("  (:goal {}){}\n", goals->empty() ? "(and)" : conjunction(*goals),
+                       costs ? "\n  (:metric minimize (total-cost)))" : ")");
     return out;
 }
 

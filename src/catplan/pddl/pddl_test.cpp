@@ -1,3 +1,4 @@
+#include "catplan/pddl/detail/test_load.hpp"
 #include "catplan/pddl/export.hpp"
 #include "catplan/pddl/import.hpp"
 #include "catplan/pddl/ipc_plan.hpp"
@@ -10,57 +11,11 @@
 namespace catplan::pddl {
 namespace {
 
-std::string data(const std::string& name) {
-    return std::string(CATPLAN_SOURCE_DIR) + "/tests/pddl/" + name;
-}
-
-/// Everything loaded from files, with the sources kept alive for diagnostics.
-struct Loaded {
-    SourceManager sources;
-    DiagnosticSink sink{sources};
-    std::optional<Domain> domain;
-    std::optional<Problem> problem;
-    std::optional<Import> import;
-
-    std::string errors() const { return sink.render(); }
-};
-
-std::unique_ptr<Loaded> load_text(const std::string& domain_text, const std::string& problem_text) {
-    auto l = std::make_unique<Loaded>();
-    l->domain =
-        parse_domain(l->sources.add_buffer("domain.pddl", domain_text), l->sources, l->sink);
-    if (!l->domain) {
-        return l;
-    }
-    if (!problem_text.empty()) {
-        l->problem = parse_problem(l->sources.add_buffer("problem.pddl", problem_text), *l->domain,
-                                   l->sources, l->sink);
-        if (!l->problem) {
-            return l;
-        }
-    }
-    l->import = import_pddl(*l->domain, l->problem ? &*l->problem : nullptr, l->sink);
-    return l;
-}
-
-std::string read(const std::string& path) {
-    SourceManager sm;
-    auto f = sm.add_file(path);
-    EXPECT_TRUE(f.has_value()) << path;
-    return f ? std::string(sm.text(*f)) : "";
-}
-
-std::unique_ptr<Loaded> load(const std::string& domain, const std::string& problem) {
-    return load_text(read(data(domain)), problem.empty() ? "" : read(data(problem)));
-}
-
-IpcPlan plan_text(const std::string& text) {
-    SourceManager sm;
-    DiagnosticSink sink(sm);
-    auto p = parse_ipc_plan(sm.add_buffer("plan", text), sm, sink);
-    EXPECT_TRUE(p.has_value()) << sink.render();
-    return p.value_or(IpcPlan{});
-}
+using testing::data;
+using testing::load;
+using testing::load_text;
+using testing::plan_text;
+using testing::read;
 
 std::string domain_error(const std::string& file) {
     auto l = load(file, "");

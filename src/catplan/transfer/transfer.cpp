@@ -641,10 +641,22 @@ void judge(TransferResult& out, const ACSet& y, std::optional<Fault> source,
     if (source) {
         v.faults.push_back(std::move(*source));
     }
+    // A goal condition is one more statement: met when some embedding of the goal avoids it.
+    auto count_conditions = [&](const ACSet& goal, const auto& conditions) {
+        for (const auto& c : conditions) {
+            ++v.goal.total;
+            if (plan::embed_goal(goal, {c}, y)) {
+                ++v.goal.satisfied;
+            } else {
+                v.goal.unsatisfied.push_back(c.name);
+            }
+        }
+    };
     if (options.goal) {
         CATPLAN_ASSERT(&options.goal->schema() == &y.schema(),
                        "the intended goal must be on the map's target schema");
         v.goal = goal_satisfaction(*options.goal, y);
+        count_conditions(*options.goal, options.goal_conditions);
         v.goal_name = options.goal_name;
         if (v.goal.satisfied != v.goal.total) {
             v.faults.push_back({Fault::Kind::IntendedGoal,
@@ -659,10 +671,11 @@ void judge(TransferResult& out, const ACSet& y, std::optional<Fault> source,
                  fmt::format("the intended goal {} is not satisfied: {}", v.goal_name, m.error())});
         }
     } else if (embedding) {
-        v.goal.total = goal_statements(*out.target_goal).size();
+        v.goal.total = goal_statements(*out.target_goal).size() + out.target_goal_conditions.size();
         v.goal.satisfied = v.goal.total;
     } else {
         v.goal = goal_satisfaction(*out.target_goal, y);
+        count_conditions(*out.target_goal, out.target_goal_conditions);
     }
     v.status = v.faults.empty() ? Verdict::Status::Valid : Verdict::Status::Invalid;
     out.timings.validate_ms = ms_since(t0);
