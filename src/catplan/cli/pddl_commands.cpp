@@ -52,6 +52,21 @@ std::optional<pddl::Import> load_pddl(Session& s, const std::string& domain_file
     return im;
 }
 
+/// "cost 3" or "cost (road-length ?from ?to)" after `prefix`, for an action of a domain whose
+/// actions have costs; "" otherwise.
+std::string cost_words(const pddl::Import& im, const std::string& action, std::string_view prefix) {
+    const pddl::Action* a = im.pddl_domain.find_action(action);
+    if (a == nullptr || !im.pddl_domain.has_costs()) {
+        return "";
+    }
+    std::vector<std::string> terms;
+    for (const auto& c : a->cost) {
+        terms.push_back(c.to_string());
+    }
+    return fmt::format("{}cost {}", prefix,
+                       terms.empty() ? "0" : fmt::format("{}", fmt::join(terms, " + ")));
+}
+
 /// The imported domain and problem in catplan's language, the rules as comments.
 std::string import_text(const pddl::Import& im, const std::string& domain_file) {
     std::string out = fmt::format("# Imported by catplan from {}.\n", domain_file);
@@ -64,8 +79,8 @@ std::string import_text(const pddl::Import& im, const std::string& domain_file) 
         out += lang::print_instance(*im.problem->goal, "Goal") + "\n";
     }
     for (const auto& a : im.actions) {
-        out += fmt::format("# action {}: {} rule{}\n", a.action, a.variants.size(),
-                           a.variants.size() == 1 ? "" : "s");
+        out += fmt::format("# action {}: {} rule{}{}\n", a.action, a.variants.size(),
+                           a.variants.size() == 1 ? "" : "s", cost_words(im, a.action, "; "));
         for (const auto& v : a.variants) {
             out += "#   " + lang::summarize_rule(*v.rule) + "\n";
         }
@@ -86,6 +101,9 @@ nlohmann::json import_json(const pddl::Import& im) {
             rules.push_back({{"name", v.rule->name}, {"summary", lang::summarize_rule(*v.rule)}});
         }
         j["actions"].push_back({{"action", a.action}, {"rules", std::move(rules)}});
+        if (im.pddl_domain.has_costs()) {
+            j["actions"].back()["cost"] = cost_words(im, a.action, "").substr(5);
+        }
     }
     return j;
 }

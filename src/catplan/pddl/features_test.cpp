@@ -13,11 +13,7 @@
 namespace catplan::pddl {
 namespace {
 
-using testing::data;
-using testing::load;
-using testing::load_text;
-using testing::plan_text;
-using testing::read;
+using namespace testing;
 
 bool has(const std::string& text, const std::string& part) {
     return text.find(part) != std::string::npos;

@@ -73,24 +73,10 @@ bool FormulaReader::unsupported_construct(const SExpr& e) {
     return true;
 }
 
-std::optional<Atom> FormulaReader::atom(const SExpr& e, bool allow_equality) {
-    if (!e.list || e.items.empty() || e.items[0].list) {
-        p_.error(e.range, "expected an atom '(predicate args...)'");
-        return std::nullopt;
-    }
-    if (unsupported_construct(e)) {
-        return std::nullopt;
-    }
+std::optional<Atom> FormulaReader::with_terms(const SExpr& e) {
     Atom a;
     a.predicate = e.items[0].atom;
     a.range = e.range;
-    if (a.predicate == "=" &&
-        std::any_of(e.items.begin() + 1, e.items.end(), [](const SExpr& x) { return x.list; })) {
-        p_.unsupported(e.items[0].range,
-                       "unsupported construct '=' on numbers (numeric conditions, "
-                       ":numeric-fluents)");
-        return std::nullopt;
-    }
     bool ok = true;
     for (std::size_t i = 1; i < e.items.size(); ++i) {
         auto t = term(e.items[i]);
@@ -99,9 +85,29 @@ std::optional<Atom> FormulaReader::atom(const SExpr& e, bool allow_equality) {
             a.args.push_back(*t);
         }
     }
-    if (!ok) {
+    return ok ? std::optional(std::move(a)) : std::nullopt;
+}
+
+std::optional<Atom> FormulaReader::atom(const SExpr& e, bool allow_equality) {
+    if (!e.list || e.items.empty() || e.items[0].list) {
+        p_.error(e.range, "expected an atom '(predicate args...)'");
         return std::nullopt;
     }
+    if (unsupported_construct(e)) {
+        return std::nullopt;
+    }
+    if (e.items[0].atom == "=" &&
+        std::any_of(e.items.begin() + 1, e.items.end(), [](const SExpr& x) { return x.list; })) {
+        p_.unsupported(e.items[0].range,
+                       "unsupported construct '=' on numbers (numeric conditions, "
+                       ":numeric-fluents)");
+        return std::nullopt;
+    }
+    auto read = with_terms(e);
+    if (!read) {
+        return std::nullopt;
+    }
+    Atom& a = *read;
     if (a.predicate == "=") {
         if (!allow_equality) {
             p_.error(e.range, "equality '(= ...)' is allowed in preconditions only");
@@ -290,23 +296,13 @@ std::optional<Atom> FormulaReader::function_term(const SExpr& e) {
     if (unsupported_construct(e)) {
         return std::nullopt;
     }
-    Atom a;
-    a.predicate = e.items[0].atom;
-    a.range = e.range;
-    const Function* f = s_.domain.find_function(a.predicate);
+    const Function* f = s_.domain.find_function(e.items[0].atom);
     if (f == nullptr) {
-        p_.error(e.items[0].range, fmt::format("unknown function '{}'", a.predicate));
+        p_.error(e.items[0].range, fmt::format("unknown function '{}'", e.items[0].atom));
         return std::nullopt;
     }
-    bool ok = true;
-    for (std::size_t i = 1; i < e.items.size(); ++i) {
-        auto t = term(e.items[i]);
-        ok = ok && t.has_value();
-        if (t) {
-            a.args.push_back(*t);
-        }
-    }
-    return ok && typed_args(a, f->params, "function") ? std::optional(a) : std::nullopt;
+    auto a = with_terms(e);
+    return a && typed_args(*a, f->params, "function") ? a : std::nullopt;
 }
 
 std::optional<CostTerm> FormulaReader::cost_term(const SExpr& e) {

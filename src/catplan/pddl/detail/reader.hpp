@@ -112,6 +112,8 @@ public:
     bool init_value(const SExpr& e, Problem& pr);
 
 private:
+    /// `(head terms...)` as an Atom, each term read (every error reported); nullopt after one.
+    std::optional<Atom> with_terms(const SExpr& e);
     /// Whether the atom's arguments fit the parameters in number and type (else reported);
     /// `what` is "predicate" or "function".
     bool typed_args(const Atom& a, const std::vector<TypedName>& params, std::string_view what);
