@@ -7,17 +7,30 @@ namespace catplan {
 
 Diagnostic& DiagnosticSink::error(SourceRange range, std::string message) {
     ++num_errors_;
-    diagnostics_.push_back({Severity::Error, range, std::move(message), {}});
+    diagnostics_.push_back({Severity::Error, range, std::move(message), {}, false});
     return diagnostics_.back();
 }
 
+Diagnostic& DiagnosticSink::unsupported(SourceRange range, std::string message) {
+    Diagnostic& d = error(range, std::move(message));
+    d.unsupported = true;
+    return d;
+}
+
+bool DiagnosticSink::only_unsupported() const {
+    return num_errors_ > 0 &&
+           std::all_of(diagnostics_.begin(), diagnostics_.end(), [](const Diagnostic& d) {
+               return d.severity != Severity::Error || d.unsupported;
+           });
+}
+
 Diagnostic& DiagnosticSink::warning(SourceRange range, std::string message) {
-    diagnostics_.push_back({Severity::Warning, range, std::move(message), {}});
+    diagnostics_.push_back({Severity::Warning, range, std::move(message), {}, false});
     return diagnostics_.back();
 }
 
 Diagnostic& DiagnosticSink::note(SourceRange range, std::string message) {
-    diagnostics_.push_back({Severity::Note, range, std::move(message), {}});
+    diagnostics_.push_back({Severity::Note, range, std::move(message), {}, false});
     return diagnostics_.back();
 }
 

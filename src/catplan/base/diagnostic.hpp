@@ -6,7 +6,8 @@
 //         |           ^~~~~~~~~~
 //
 // A phase appends every error it finds to a DiagnosticSink and keeps going; the driver renders them
-// all at once, sorted by location, and exits with code 2.
+// all at once, sorted by location, and exits with code 2 (3 when every error is about valid input
+// that uses something catplan does not support, such as PDDL's `:conditional-effects`).
 
 #include "catplan/base/source.hpp"
 
@@ -23,6 +24,8 @@ struct Diagnostic {
     std::string message;
     /// Follow-up notes, each optionally located ("note: first declared here").
     std::vector<std::pair<SourceRange, std::string>> notes;
+    /// An error about valid input that uses something catplan does not support (exit 3, not 2).
+    bool unsupported = false;
 };
 
 class DiagnosticSink {
@@ -31,6 +34,8 @@ public:
 
     /// Records an error at a range (an invalid range renders without location).
     Diagnostic& error(SourceRange range, std::string message);
+    /// Records an error about valid input that uses something catplan does not support.
+    Diagnostic& unsupported(SourceRange range, std::string message);
     /// Records a warning at a range.
     Diagnostic& warning(SourceRange range, std::string message);
     /// Records a note at a range (information that is neither an error nor a warning).
@@ -44,6 +49,9 @@ public:
     bool has_errors() const { return num_errors_ > 0; }
 
     std::size_t num_errors() const { return num_errors_; }
+
+    /// Whether there are errors and every one is about something catplan does not support.
+    bool only_unsupported() const;
 
     const std::vector<Diagnostic>& diagnostics() const { return diagnostics_; }
 

@@ -151,7 +151,7 @@ int cmd_validate(const ValidateArgs& a, std::ostream& out, std::ostream& err) {
     Session s;
     auto problem = load_problem(s, a.files[0], a.domain, a.problem, err);
     if (problem == nullptr) {
-        return kBadInput;
+        return input_error(s);
     }
     auto plan = load_plan(s, a.plan_file, *problem, err);
     if (!plan) {
@@ -349,7 +349,7 @@ int cmd_plan(const PlanArgs& a, std::ostream& out, std::ostream& err) {
     Session s;
     auto problem = load_problem(s, a.files[0], a.domain, a.problem, err);
     if (problem == nullptr) {
-        return kBadInput;
+        return input_error(s);
     }
     auto r = plan::find_plan(*problem, options);
     int rc = plan_exit_code(r.status);

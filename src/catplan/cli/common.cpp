@@ -25,6 +25,10 @@ bool report(Session& s, std::ostream& err) {
     return errors;
 }
 
+int input_error(const Session& s) {
+    return s.sink.only_unsupported() ? kUnsupported : kBadInput;
+}
+
 // Loads a file and its imports; nullopt (with every diagnostic printed) when it has errors.
 std::optional<lang::Module> load(Session& s, const std::string& file, std::ostream& err) {
     auto m = lang::load_file(file, s.sources, s.sink);
@@ -338,6 +342,7 @@ transfer::TransferOptions transfer_options(const TransferArgs& a, const Transfer
     options.rename_by_type = a.rename_by_type;
     // The verdict is about the goal intended in the target domain, when one is given.
     options.goal = in.target_goal;
+    options.goal_conditions = in.target_goal_conditions;
     options.goal_name = in.pddl && a.goal.empty() ? a.target_problem : a.goal;
     // PDDL inputs: the target domain's own actions carry the steps out.
     options.target_actions = in.pddl ? in.pddl->actions : nullptr;

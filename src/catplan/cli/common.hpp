@@ -39,6 +39,10 @@ struct Session {
 /// were errors among them.
 bool report(Session& s, std::ostream& err);
 
+/// The exit code of input that did not load: kUnsupported when every error the session met is
+/// about valid input catplan does not support (PDDL's `:conditional-effects`), else kBadInput.
+int input_error(const Session& s);
+
 /// Loads a file and its imports; nullopt (with every diagnostic printed) when it has errors.
 std::optional<lang::Module> load(Session& s, const std::string& file, std::ostream& err);
 
@@ -155,6 +159,8 @@ struct TransferInputs {
     plan::ProblemPtr problem;
     plan::Plan plan;
     std::shared_ptr<const acset::ACSet> target_goal;
+    /// Conditions on target_goal's embedding (a PDDL target problem's negative goals).
+    std::vector<rewrite::ApplicationCondition> target_goal_conditions;
     /// When --problem is a PDDL file: the PDDL side of the inputs (pddl_transfer.hpp).
     std::shared_ptr<const PddlTransfer> pddl;
 };

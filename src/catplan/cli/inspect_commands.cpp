@@ -32,7 +32,7 @@ int cmd_check(const std::vector<std::string>& files, bool json, std::ostream& ou
         modules.push_back(lang::load_file(f, s.sources, s.sink));
     }
     if (report(s, err)) {
-        return kBadInput;
+        return input_error(s);
     }
     nlohmann::json doc = {{"files", nlohmann::json::array()}};
     for (std::size_t i = 0; i < files.size(); ++i) {

@@ -7,6 +7,7 @@
 #include "catplan/cli/pddl_export.hpp"
 #include "catplan/cli/plan_commands.hpp"
 #include "catplan/migrate/migration.hpp"
+#include "catplan/pddl/costs.hpp"
 #include "catplan/pddl/export.hpp"
 #include "catplan/pddl/import.hpp"
 #include "catplan/pddl/ipc_plan.hpp"
@@ -52,6 +53,21 @@ std::optional<pddl::Import> load_pddl(Session& s, const std::string& domain_file
     return im;
 }
 
+/// "cost 3" or "cost (road-length ?from ?to)" after `prefix`, for an action of a domain whose
+/// actions have costs; "" otherwise.
+std::string cost_words(const pddl::Import& im, const std::string& action, std::string_view prefix) {
+    const pddl::Action* a = im.pddl_domain.find_action(action);
+    if (a == nullptr || !im.pddl_domain.has_costs()) {
+        return "";
+    }
+    std::vector<std::string> terms;
+    for (const auto& c : a->cost) {
+        terms.push_back(c.to_string());
+    }
+    return fmt::format("{}cost {}", prefix,
+                       terms.empty() ? "0" : fmt::format("{}", fmt::join(terms, " + ")));
+}
+
 /// The imported domain and problem in catplan's language, the rules as comments.
 std::string import_text(const pddl::Import& im, const std::string& domain_file) {
     std::string out = fmt::format("# Imported by catplan from {}.\n", domain_file);
@@ -64,8 +80,8 @@ std::string import_text(const pddl::Import& im, const std::string& domain_file) 
         out += lang::print_instance(*im.problem->goal, "Goal") + "\n";
     }
     for (const auto& a : im.actions) {
-        out += fmt::format("# action {}: {} rule{}\n", a.action, a.variants.size(),
-                           a.variants.size() == 1 ? "" : "s");
+        out += fmt::format("# action {}: {} rule{}{}\n", a.action, a.variants.size(),
+                           a.variants.size() == 1 ? "" : "s", cost_words(im, a.action, "; "));
         for (const auto& v : a.variants) {
             out += "#   " + lang::summarize_rule(*v.rule) + "\n";
         }
@@ -86,6 +102,9 @@ nlohmann::json import_json(const pddl::Import& im) {
             rules.push_back({{"name", v.rule->name}, {"summary", lang::summarize_rule(*v.rule)}});
         }
         j["actions"].push_back({{"action", a.action}, {"rules", std::move(rules)}});
+        if (im.pddl_domain.has_costs()) {
+            j["actions"].back()["cost"] = cost_words(im, a.action, "").substr(5);
+        }
     }
     return j;
 }
@@ -95,7 +114,7 @@ int cmd_pddl_import(const std::vector<std::string>& files, const std::string& ou
     Session s;
     auto im = load_pddl(s, files[0], files.size() > 1 ? files[1] : "", err);
     if (!im) {
-        return kBadInput;
+        return input_error(s);
     }
     return emit(json ? json_text(import_json(*im)) : import_text(*im, files[0]), output, out, err);
 }
@@ -169,36 +188,46 @@ int cmd_pddl_export(const ExportArgs& a, std::ostream& out, std::ostream& err) {
     plan::ProblemPtr problem;
     auto m = load(s, a.file, err);
     if (!m) {
-        return kBadInput;
+        return input_error(s);
     }
     if (!a.problem.empty()) {
         // From the module loaded above, so that its schemas are the ones a map refers to.
         const auto* d = find_declaration(*m, a.file, a.problem, lang::DeclKind::Problem, err);
         if (d == nullptr) {
-            return kBadInput;
+            return input_error(s);
         }
         problem = d->problem;
         domain = problem->domain;
         if (!a.domain.empty() && a.domain != domain->name) {
             error(err, fmt::format("problem '{}' is on domain {}, not {}", a.problem, domain->name,
                                    a.domain));
-            return kBadInput;
+            return input_error(s);
         }
     } else {
         if (a.domain.empty()) {
             error(err, "pddl export needs --domain or --problem");
-            return kBadInput;
+            return input_error(s);
         }
         const auto* d = find_declaration(*m, a.file, a.domain, lang::DeclKind::Domain, err);
         if (d == nullptr) {
-            return kBadInput;
+            return input_error(s);
         }
         domain = d->domain;
+    }
+    if (problem != nullptr && !problem->goal_conditions.empty()) {
+        // PDDL can say a negative goal; this export does not write one (nor migrate it).
+        for (const auto& c : problem->goal_conditions) {
+            s.sink.unsupported(c.range, fmt::format("the negative goal {} of problem {}: catplan's "
+                                                    "PDDL export does not write goal conditions",
+                                                    c.name, problem->name));
+        }
+        report(s, err);
+        return kUnsupported;
     }
     if (!a.map.empty()) {
         auto migrated = migrate_for_export(*m, a, domain, problem, err);
         if (!migrated) {
-            return kBadInput;
+            return input_error(s);
         }
         std::tie(domain, problem) = *migrated;
     }
@@ -246,13 +275,30 @@ nlohmann::json ipc_validation_json(const Session& s, const pddl::Import& im,
     for (std::size_t i = 0; i < rule_steps.size(); ++i) {
         auto step = step_json(plan[i].action, plan[i].args, rule_steps[i]["match"]);
         step["rule"] = v.plan.steps[i].to_string();
+        step["cost"] = v.cost.steps[i];
         steps.push_back(std::move(step));
     }
     std::string at = v.failed_step ? where(s, plan[*v.failed_step].range) : "";
     if (at.size() > 3) {
         at = at.substr(2, at.size() - 3); // " (f:l:c)" -> "f:l:c"
     }
-    return validation_json(v.valid, v.goal_reached, v.failed_step, v.reason, at, std::move(steps));
+    auto j =
+        validation_json(v.valid, v.goal_reached, v.failed_step, v.reason, at, std::move(steps));
+    j["cost"] = v.valid ? nlohmann::json(v.cost.total) : nlohmann::json(nullptr);
+    j["unit_cost"] = v.cost.unit;
+    return j;
+}
+
+/// The plan's cost as the plan file's last line says it (when `written` to a file), and whether
+/// the search's "optimal" holds for it: the planner counts every step as 1 (docs/planner.md).
+std::string cost_summary(const pddl::PlanCost& cost, bool written, bool optimal) {
+    // The plan's own last line says its cost, unless the plan went to a file.
+    std::string out = written ? "; plan cost: " + pddl::describe_cost(cost) + "\n" : "";
+    if (!cost.unit && optimal) {
+        out += "; the search counted every step as 1: the plan is shortest, its cost may not be "
+               "the least\n";
+    }
+    return out;
 }
 
 } // namespace
@@ -300,18 +346,18 @@ int pddl_validate(const std::vector<std::string>& files, bool json, std::ostream
     Session s;
     auto im = load_pddl(s, files[0], files[1], err);
     if (!im) {
-        return kBadInput;
+        return input_error(s);
     }
     auto f = read_input(s, files[2], err);
     if (!f) {
-        return kBadInput;
+        return input_error(s);
     }
     auto plan = pddl::parse_ipc_plan(*f, s.sources, s.sink);
     if (plan) {
         pddl::check_ipc_plan(*im, *plan, s.sink);
     }
     if (report(s, err) || !plan) {
-        return kBadInput;
+        return input_error(s);
     }
     auto v = pddl::validate_ipc_plan(*im, *plan);
     if (json) {
@@ -319,11 +365,12 @@ int pddl_validate(const std::vector<std::string>& files, bool json, std::ostream
         return v.valid ? kOk : kNo;
     }
     for (std::size_t i = 0; i < v.plan.steps.size(); ++i) {
-        out << fmt::format("{}. {}   [rule {}]\n", i + 1, (*plan)[i].to_string(),
-                           v.plan.steps[i].to_string());
+        out << fmt::format("{}. {}   [rule {}]{}\n", i + 1, (*plan)[i].to_string(),
+                           v.plan.steps[i].to_string(),
+                           v.cost.unit ? "" : fmt::format("   cost {}", v.cost.steps[i]));
     }
     if (v.valid) {
-        out << "valid: goal reached\n";
+        out << "valid: goal reached\nplan cost: " << pddl::describe_cost(v.cost) << "\n";
         return kOk;
     }
     std::string at = v.failed_step ? where(s, (*plan)[*v.failed_step].range) : "";
@@ -341,17 +388,26 @@ int pddl_plan(const std::vector<std::string>& files, const plan::SearchOptions& 
     Session s;
     auto im = load_pddl(s, files[0], files[1], err);
     if (!im) {
-        return kBadInput;
+        return input_error(s);
     }
     auto r = plan::find_plan(*im->problem, options);
     int rc = plan_exit_code(r.status);
     std::optional<pddl::IpcPlan> ipc;
+    pddl::PlanCost cost;
     std::string text;
     if (r.plan) {
         auto converted = pddl::to_ipc_plan(*im, *r.plan);
         CATPLAN_ASSERT(converted.has_value(), "the planner uses the imported rules");
         ipc = std::move(*converted);
-        text = pddl::write_ipc_plan(*ipc);
+        cost = pddl::plan_cost(im->pddl_domain, *im->pddl_problem, *ipc);
+        if (!cost.undefined.empty()) {
+            // The search does not read costs (docs/planner.md), so it may take such a step.
+            error(err, fmt::format("the plan found is not valid: {} (catplan's planner does not "
+                                   "read costs, so it cannot avoid a step without one)",
+                                   cost.undefined));
+            return kUnsupported;
+        }
+        text = pddl::write_ipc_plan(*ipc, cost);
         if (!output.empty() && output != "-") {
             if (int wrc = emit(text, output, out, err); wrc != kOk) {
                 return wrc;
@@ -364,10 +420,19 @@ int pddl_plan(const std::vector<std::string>& files, const plan::SearchOptions& 
         for (const auto& st : ipc ? *ipc : pddl::IpcPlan{}) {
             steps.push_back({{"action", st.action}, {"args", st.args}});
         }
-        out << plan_json(r, search, std::move(steps), timing).dump(2) << "\n";
+        auto j = plan_json(r, search, std::move(steps), timing);
+        j["cost"] = ipc ? nlohmann::json(cost.total) : nlohmann::json(nullptr);
+        j["unit_cost"] = pddl::unit_cost(im->pddl_domain, *im->pddl_problem);
+        if (!j["unit_cost"].get<bool>()) {
+            j["optimal"] = false; // the search counted steps, not costs
+        }
+        out << j.dump(2) << "\n";
         return rc;
     }
     out << text << plan_summary(r, search, ipc ? ipc->size() : 0, timing, "; ");
+    if (ipc) {
+        out << cost_summary(cost, text.empty(), r.optimal);
+    }
     return rc;
 }
 

@@ -5,6 +5,7 @@
 #include "catplan/cli/commands.hpp"
 #include "catplan/hom/isomorphism.hpp"
 #include "catplan/migrate/migration.hpp"
+#include "catplan/pddl/costs.hpp"
 #include "catplan/pddl/steps.hpp"
 
 #include <algorithm>
@@ -117,6 +118,15 @@ std::string compare_initial(const PddlTransfer& pt, const pddl::Problem& migrate
     return o;
 }
 
+/// "source plan cost: 12 (general cost)" when the source domain's actions have costs.
+std::string source_cost_text(const PddlTransfer& pt) {
+    if (!pt.source->pddl_domain.has_costs()) {
+        return "";
+    }
+    auto cost = pddl::plan_cost(pt.source->pddl_domain, *pt.source->pddl_problem, pt.plan);
+    return "source plan cost: " + pddl::describe_cost(cost) + "\n";
+}
+
 } // namespace
 
 bool is_pddl_problem(const std::string& problem) {
@@ -163,6 +173,7 @@ std::optional<TransferInputs> load_pddl_transfer_inputs(Session& s, const lang::
         }
         if (in.target_goal == nullptr) {
             in.target_goal = user->problem->goal;
+            in.target_goal_conditions = user->problem->goal_conditions;
         }
     }
     in.pddl = std::make_shared<const PddlTransfer>(std::move(pt));
@@ -230,16 +241,37 @@ int finish_pddl_transfer(const TransferInputs& in, const TransferArgs& a,
     const auto& pt = *in.pddl;
     plan::Plan target{transfer::target_plan(t.steps)};
     int rc = kOk;
+    text += source_cost_text(pt);
     if (pt.target != nullptr && t.target_initial && t.target_goal) {
         auto ipc = pddl::to_ipc_plan(*pt.target, target);
         CATPLAN_ASSERT(ipc.has_value(), "the target plan uses the target's rules");
-        plan_text = pddl::write_ipc_plan(*ipc);
-        auto migrated = pddl::problem_of(*pt.target, pt.source->pddl_problem->name,
-                                         *t.target_initial, *t.target_goal);
+        auto migrated =
+            pddl::problem_of(*pt.target, pt.source->pddl_problem->name, *t.target_initial,
+                             *t.target_goal, t.target_goal_conditions);
         if (pt.target_problem) {
+            // The target's function values (an action's cost) are the user's problem's.
+            migrated.values = pt.target_problem->values;
             bool same = false;
             text += compare_initial(pt, migrated, same);
             rc = same ? rc : kNo;
+        }
+        auto cost = pddl::plan_cost(pt.target->pddl_domain, migrated, *ipc);
+        plan_text = pddl::write_ipc_plan(*ipc, cost);
+        if (pt.target->pddl_domain.has_costs()) {
+            text += "target plan cost: " + pddl::describe_cost(cost) +
+                    (cost.undefined.empty() || pt.target_problem
+                         ? "\n"
+                         : " (--target-problem gives the target's values)\n");
+        }
+        if (migrated.unwritten_goal_conditions > 0) {
+            text += fmt::format("note: {} condition{} of Δ_F(G) forbid{} several facts together, "
+                                "which a PDDL goal cannot say: the PDDL check below leaves {} "
+                                "out (the verdict above checks {})\n",
+                                migrated.unwritten_goal_conditions,
+                                migrated.unwritten_goal_conditions == 1 ? "" : "s",
+                                migrated.unwritten_goal_conditions == 1 ? "s" : "",
+                                migrated.unwritten_goal_conditions == 1 ? "it" : "them",
+                                migrated.unwritten_goal_conditions == 1 ? "it" : "them");
         }
         SourceManager scratch;
         DiagnosticSink scratch_sink(scratch);

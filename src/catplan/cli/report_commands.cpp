@@ -24,7 +24,7 @@ int cmd_report(const ReportArgs& a, std::ostream& out, std::ostream& err) {
     Session s;
     auto in = load_transfer_inputs(s, a.in, err);
     if (!in) {
-        return kBadInput;
+        return input_error(s);
     }
     auto options = transfer_options(a.in, *in);
     options.keep_states = true; // the page shows every state

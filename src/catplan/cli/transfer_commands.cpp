@@ -336,7 +336,7 @@ int cmd_transfer(const TransferCommandArgs& a, std::ostream& out, std::ostream& 
     Session s;
     auto in = load_transfer_setting(s, a.in, err);
     if (!in || !load_transfer_plan(s, *in, a.plans.front(), err)) {
-        return kBadInput;
+        return input_error(s);
     }
     Outcome r = run_transfer(a, *in, err);
     std::string text =
@@ -537,7 +537,7 @@ int cmd_transfer_batch(const TransferCommandArgs& a, std::ostream& out, std::ost
     // The shared inputs' errors are printed once; the other workers load the same files again.
     workers[0]->in = load_transfer_setting(workers[0]->s, a.in, err);
     if (!workers[0]->in) {
-        return kBadInput;
+        return input_error(workers[0]->s);
     }
     std::vector<PlanResult> results(plans->size());
     parallel_for(plans->size(), jobs, [&](std::size_t k, std::size_t i) {

@@ -191,19 +191,22 @@ void spell(Expr& e, const SourceManager& sources, const std::set<std::string>& k
 
 // ---- entries PDDL implies ----------------------------------------------------------------------
 
-/// The source is-a path from type object `from` up to `to` (empty when equal), or nullopt.
+/// A source is-a path from type object `from` up to `to` (empty when equal), or nullopt; along
+/// the first parent that leads there (a type may have several: pddl.hpp).
 std::optional<std::vector<HomId>> is_a_path(const pddl::Import& s, ObId from, ObId to) {
-    std::vector<HomId> path;
-    for (const std::string* t = s.type_of(from); t != nullptr;) {
-        if (s.type_ob.at(*t) == to) {
-            return path;
+    if (from == to) {
+        return std::vector<HomId>{};
+    }
+    const std::string* t = s.type_of(from);
+    auto it = t == nullptr ? s.is_a.end() : s.is_a.find(*t);
+    if (it == s.is_a.end()) {
+        return std::nullopt;
+    }
+    for (HomId h : it->second) {
+        if (auto rest = is_a_path(s, s.domain->schema->hom(h).codom, to)) {
+            rest->insert(rest->begin(), h);
+            return rest;
         }
-        auto it = s.is_a.find(*t);
-        if (it == s.is_a.end()) {
-            return std::nullopt;
-        }
-        path.push_back(it->second);
-        t = s.type_of(s.domain->schema->hom(it->second).codom);
     }
     return std::nullopt;
 }
@@ -219,9 +222,11 @@ public:
         if (!has_({GeneratorKind::AttrType, t_.name_type.index()})) {
             f_.map_attr_type(t_.name_type, s_.name_type, at_);
         }
-        for (const auto& [type, h] : t_.is_a) {
-            if (!has_({GeneratorKind::Hom, h.index()})) {
-                to_type(h, ts.hom(h).dom, ts.hom(h).codom, std::nullopt);
+        for (const auto& [type, homs] : t_.is_a) {
+            for (HomId h : homs) {
+                if (!has_({GeneratorKind::Hom, h.index()})) {
+                    to_type(h, ts.hom(h).dom, ts.hom(h).codom, std::nullopt);
+                }
             }
         }
         for (const auto& [pred, homs] : t_.predicate_homs) {

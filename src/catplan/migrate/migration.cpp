@@ -618,6 +618,7 @@ Result<rewrite::Rule> migrate(const SchemaMap& f, const rewrite::Rule& rule) {
     rewrite::Rule out(f.target());
     out.name = rule.name;
     out.range = rule.range;
+    out.cost = rule.cost; // the migrated action is the same action: it costs the same
     MigratedState l = migrate_state(f, rule.L);
     MigratedState k = migrate_state(f, rule.K);
     MigratedState r = migrate_state(f, rule.R);

@@ -47,12 +47,24 @@ TermAtom term_atom(const std::vector<ActionTerm>& terms, const Atom& a) {
     return out;
 }
 
+/// Per pair of terms, whether one object can be of both their types (Domain::may_share, which
+/// may look at every type: computed once per action).
+std::vector<std::vector<char>> sharing(const Domain& d, const std::vector<ActionTerm>& terms) {
+    std::vector<std::vector<char>> out(terms.size(), std::vector<char>(terms.size(), 1));
+    for (std::size_t x = 0; x < terms.size(); ++x) {
+        for (std::size_t y = x + 1; y < terms.size(); ++y) {
+            out[x][y] = out[y][x] = d.may_share(terms[x].type, terms[y].type) ? 1 : 0;
+        }
+    }
+    return out;
+}
+
 /// An action read over its terms, with what the invariant check needs.
 struct LiftedAction {
     std::vector<ActionTerm> terms;
+    std::vector<std::vector<char>> share; // sharing(terms)
     std::vector<TermAtom> pos, add, del;
     std::set<std::pair<std::size_t, std::size_t>> distinct; // (not (= x y)), x < y
-    const Domain* domain = nullptr;
 
     bool in_pos(const TermAtom& a) const {
         return std::find(pos.begin(), pos.end(), a) != pos.end();
@@ -67,7 +79,7 @@ struct LiftedAction {
         if (s.constant && t.constant) {
             return false;
         }
-        if (!domain->is_subtype(s.type, t.type) && !domain->is_subtype(t.type, s.type)) {
+        if (share[x][y] == 0) {
             return false;
         }
         return distinct.count({std::min(x, y), std::max(x, y)}) == 0;
@@ -99,8 +111,8 @@ struct LiftedAction {
 
 LiftedAction lift(const Domain& d, const Action& a) {
     LiftedAction out;
-    out.domain = &d;
     out.terms = action_terms(d, a);
+    out.share = sharing(d, out.terms);
     for (const auto& l : a.precondition) {
         if (l.atom.predicate == "=") {
             if (!l.positive) {
@@ -323,7 +335,8 @@ ArgPattern block_pattern(const std::vector<std::size_t>& args) {
 
 class Identifications {
 public:
-    Identifications(const Domain& d, const Action& a) : d_(d), a_(a), terms_(action_terms(d, a)) {}
+    Identifications(const Domain& d, const Action& a)
+        : d_(d), a_(a), terms_(action_terms(d, a)), share_(sharing(d, terms_)) {}
 
     /// Every identification the types and the equality literals allow, with its facts; those
     /// with a contradictory precondition are left out.
@@ -347,8 +360,9 @@ private:
         }
     }
 
-    /// Whether term i may join its block: types on a chain, at most one constant, a constant's
-    /// type below every parameter's type, and the equality literals so far respected.
+    /// Whether term i may join its block: types an object can have at once, at most one
+    /// constant, a constant's type below every parameter's type, and the equality literals so
+    /// far respected.
     bool fits(std::size_t i, const std::vector<std::size_t>& block) const {
         for (std::size_t j = 0; j < i; ++j) {
             if (block[j] != block[i]) {
@@ -362,7 +376,7 @@ private:
                 (t.constant && !d_.is_subtype(t.type, s.type))) {
                 return false;
             }
-            if (!d_.is_subtype(s.type, t.type) && !d_.is_subtype(t.type, s.type)) {
+            if (share_[i][j] == 0) {
                 return false;
             }
         }
@@ -418,6 +432,7 @@ private:
     const Domain& d_;
     const Action& a_;
     std::vector<ActionTerm> terms_;
+    std::vector<std::vector<char>> share_;
     std::vector<Identification> out_;
 };
 

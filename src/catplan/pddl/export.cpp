@@ -613,6 +613,11 @@ Result<std::string> Writer::write_actions(std::vector<Exported::Action>& actions
                                           std::set<std::string>& constants) {
     std::string out;
     for (const auto& group : group_rules(domain)) {
+        if (const auto& c = group.front()->cost; c && !c->depends_on.empty()) {
+            return fail(fmt::format("not expressible by catplan's export: the cost of {} is {}, "
+                                    "a value each problem gives, which the export does not write",
+                                    group.front()->name, c->depends_on));
+        }
         std::vector<ActionText> texts;
         for (const auto* r : group) {
             auto t = read_rule(*r);
@@ -644,6 +649,10 @@ Result<std::string> Writer::write_actions(std::vector<Exported::Action>& actions
             if (a.add.count(f) == 0) {
                 eff.push_back("(not " + f + ")");
             }
+        }
+        // The action's cost (its variants share it): a constant, as :action-costs writes it.
+        if (const auto& cost = group.front()->cost; cost && cost->constant != 0) {
+            eff.push_back(fmt::format("(increase (total-cost) {})", cost->constant));
         }
         std::string params;
         for (const auto& [v, t] : a.params) {

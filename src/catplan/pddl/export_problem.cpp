@@ -246,6 +246,12 @@ std::string goal_action_name(const plan::Domain& d) {
     return actions.take("reach-goal");
 }
 
+/// Whether an action of d has a cost (PDDL's :action-costs).
+bool has_costs(const plan::Domain& d) {
+    return std::any_of(d.rules.begin(), d.rules.end(),
+                       [](const auto& r) { return r->cost.has_value(); });
+}
+
 /// The problem file (w's goal action decided).
 Result<std::string> problem_text(Writer& w, const GoalText& goal,
                                  const std::set<std::string>& constants) {
@@ -270,11 +276,16 @@ Result<std::string> problem_text(Writer& w, const GoalText& goal,
     out += fmt::format("(define (problem {})\n  (:domain {})\n", detail::pddl_name(p.name, "p"),
                        detail::pddl_name(p.domain->name, "d"));
     out += fmt::format("  (:objects {})\n", fmt::join(objects, " "));
+    bool costs = has_costs(*p.domain);
+    if (costs) {
+        facts->emplace_back("(= (total-cost) 0)");
+    }
     out += fmt::format("  (:init {})\n", fmt::join(*facts, "\n         "));
     std::string g = goal.pattern
                         ? fmt::format("({})", w.goal_predicate)
                         : (goal.statements.empty() ? "(and)" : conjunction(goal.statements));
-    return out + fmt::format("  (:goal {}))\n", g);
+    return out + fmt::format("  (:goal {}){}\n", g,
+                             costs ? "\n  (:metric minimize (total-cost)))" : ")");
 }
 
 /// A Writer with its reading and marker shapes.
@@ -295,6 +306,11 @@ Result<std::unique_ptr<Writer>> make_writer(const plan::Domain& domain,
 } // namespace
 
 Result<Exported> export_pddl(const plan::Domain& domain, const plan::Problem* problem) {
+    if (problem != nullptr && !problem->goal_conditions.empty()) {
+        return fail(fmt::format("not expressible by catplan's export: the goal's condition {} "
+                                "(a negative goal), which the export does not write",
+                                problem->goal_conditions.front().name));
+    }
     auto made = make_writer(domain, problem);
     if (!made) {
         return fail(made.error());
@@ -350,12 +366,16 @@ Result<Exported> export_pddl(const plan::Domain& domain, const plan::Problem* pr
     std::string out = fmt::format("; Exported by catplan from the domain {}.\n", domain.name);
     out += comment_lines(w.notes);
     out += fmt::format("(define (domain {})\n", detail::pddl_name(domain.name, "d"));
-    out += "  (:requirements :strips :typing :negative-preconditions :equality)\n";
+    bool costs = has_costs(domain);
+    out += fmt::format("  (:requirements :strips :typing :negative-preconditions :equality{})\n",
+                       costs ? " :action-costs" : "");
     out += fmt::format("  (:types{})\n", w.write_types());
     if (!constants.empty()) {
         out += fmt::format("  (:constants {})\n", fmt::join(constants, " "));
     }
-    out += "  (:predicates\n" + w.write_predicates() + "  )\n" + *actions + ")\n";
+    out += "  (:predicates\n" + w.write_predicates() + "  )\n";
+    out += costs ? "  (:functions (total-cost) - number)\n" : "";
+    out += *actions + ")\n";
     ex.domain = std::move(out);
     if (!problem_file.empty()) {
         std::size_t eol = problem_file.find('\n') + 1;

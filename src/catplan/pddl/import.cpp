@@ -24,13 +24,26 @@ std::string fresh_name(const Schema& s, std::string base) {
     return base;
 }
 
-/// The type's ancestors, itself first, "object" last.
-std::vector<std::string> chain(const Domain& d, const std::string& type) {
+/// The types an object of all of `types` is of: each of them and every ancestor, in the domain's
+/// order (parents first).
+std::vector<std::string> ancestors(const Domain& d, const std::vector<std::string>& types) {
     std::vector<std::string> out;
-    for (const Type* t = d.find_type(type); t != nullptr;
-         t = t->parent.empty() ? nullptr : d.find_type(t->parent)) {
-        out.push_back(t->name);
+    for (const auto& t : d.types) {
+        if (std::any_of(types.begin(), types.end(),
+                        [&](const std::string& u) { return d.is_subtype(u, t.name); })) {
+            out.push_back(t.name);
+        }
     }
+    return out;
+}
+
+/// The name of a type's schema object: the type's, or `either_a_b` for `(either a b)`.
+std::string ob_name(const std::string& type) {
+    if (type.empty() || type[0] != '(') {
+        return type;
+    }
+    std::string out = type.substr(1, type.size() - 2);
+    std::replace(out.begin(), out.end(), ' ', '_');
     return out;
 }
 
@@ -40,18 +53,19 @@ void make_vocabulary(Import& im) {
     auto schema = std::make_shared<Schema>(d.name);
     Schema& s = *schema;
     for (const auto& t : d.types) {
-        im.type_ob[t.name] = s.add_ob(t.name, t.range);
+        im.type_ob[t.name] = s.add_ob(fresh_name(s, ob_name(t.name)), t.range);
     }
     im.name_type = s.add_attr_type(fresh_name(s, "Name"), schema::ValueKind::String);
     for (const auto& t : d.types) {
-        if (!t.parent.empty()) {
-            im.is_a[t.name] = s.add_hom(fresh_name(s, t.name + "_is_" + t.parent),
-                                        im.type_ob[t.name], im.type_ob[t.parent], t.range);
+        for (const auto& parent : t.parents) {
+            im.is_a[t.name].push_back(
+                s.add_hom(fresh_name(s, ob_name(t.name) + "_is_" + ob_name(parent)),
+                          im.type_ob[t.name], im.type_ob[parent], t.range));
         }
     }
     for (const auto& t : d.types) {
-        im.name_attr[t.name] =
-            s.add_attr(fresh_name(s, t.name + "_name"), im.type_ob[t.name], im.name_type, t.range);
+        im.name_attr[t.name] = s.add_attr(fresh_name(s, ob_name(t.name) + "_name"),
+                                          im.type_ob[t.name], im.name_type, t.range);
     }
     for (const auto& p : d.predicates) {
         ObId ob = s.add_ob(fresh_name(s, p.name), p.range);
@@ -69,26 +83,26 @@ void make_vocabulary(Import& im) {
     im.domain = std::move(domain);
 }
 
-/// The parts of one PDDL object (or rule term) in a state: one per type of its chain.
+/// The parts of one PDDL object (or rule term) in a state: one per type it is of.
 using EntityParts = std::map<std::string, Part>;
 
-/// Adds the parts of an object of `type` named `name`; `pinned` sets the name attribute.
-EntityParts add_entity(const Import& im, ACSet& x, const std::string& type, const std::string& name,
-                       bool pinned) {
+/// Adds the parts of an object of every type of `types` (and their ancestors) named `name`,
+/// linked by the is-a homs; `pinned` sets the name attribute.
+EntityParts add_entity(const Import& im, ACSet& x, const std::vector<std::string>& types,
+                       const std::string& name, bool pinned) {
+    const Domain& d = im.pddl_domain;
     EntityParts parts;
-    Part below = kNoPart;
-    std::string below_type;
-    for (const auto& t : chain(im.pddl_domain, type)) {
+    for (const auto& t : ancestors(d, types)) {
         Part p = x.add_part(im.type_ob.at(t), name);
         if (pinned) {
             x.set_subpart(im.name_attr.at(t), p, Value::string(name));
         }
-        if (below != kNoPart) {
-            x.set_subpart(im.is_a.at(below_type), below, p);
-        }
         parts[t] = p;
-        below = p;
-        below_type = t;
+        // Parents come first, so each is-a hom's target is there.
+        const Type* info = d.find_type(t);
+        for (std::size_t k = 0; k < info->parents.size(); ++k) {
+            x.set_subpart(im.is_a.at(t)[k], p, parts.at(info->parents[k]));
+        }
     }
     return parts;
 }
@@ -113,6 +127,21 @@ std::string fact_label(const Fact& f, const std::vector<std::string>& names) {
         s += " " + names[a];
     }
     return s + ")";
+}
+
+/// The morphism sending each part of a (a prefix of b's parts, object by object) to itself.
+hom::ACSetMorphism inclusion(const ACSet& a, const ACSet& b) {
+    hom::ACSetMorphism m;
+    const Schema& s = a.schema();
+    m.components.resize(s.num_obs());
+    for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
+        for (Part p = 0; p < a.num_parts(ObId(o)); ++p) {
+            m.components[o].push_back(p);
+        }
+        CATPLAN_ASSERT(a.num_parts(ObId(o)) <= b.num_parts(ObId(o)), "not a prefix");
+    }
+    m.var_components.resize(s.num_attr_types());
+    return m;
 }
 
 // ---- the variants of an action ----------------------------------------------------------------
@@ -194,9 +223,20 @@ private:
         return reps;
     }
 
+    /// Per block: the types of its terms (its entity is of each of them; they need not be on
+    /// one chain when unions or a type with two parents let an object be of both).
+    std::vector<std::vector<std::string>> block_types(const Identification& id) const {
+        std::vector<std::vector<std::string>> out(id.blocks);
+        for (std::size_t i = 0; i < terms_.size(); ++i) {
+            out[id.block[i]].push_back(terms_[i].type);
+        }
+        return out;
+    }
+
     Variant make_variant(const Identification& id, const std::set<Fact>& present,
                          const std::set<Fact>& absent, std::size_t index) const {
         std::vector<ActionTerm> reps = representatives(id);
+        auto types = block_types(id);
         auto rule = std::make_shared<rewrite::Rule>(im_.domain->schema);
         rule->name = index == 0 ? a_.name : fmt::format("{}~{}", a_.name, index + 1);
         rule->range = a_.range;
@@ -206,9 +246,9 @@ private:
         std::sort(rule->relations.begin(), rule->relations.end());
         std::vector<EntityParts> ents;
         std::vector<std::string> names;
-        for (const auto& r : reps) {
-            ents.push_back(add_entity(im_, rule->K, r.type, r.name, r.constant));
-            names.push_back(r.name);
+        for (std::size_t b = 0; b < reps.size(); ++b) {
+            ents.push_back(add_entity(im_, rule->K, types[b], reps[b].name, reps[b].constant));
+            names.push_back(reps[b].name);
         }
         // K: the entities and the present facts that stay true; L adds the deleted ones, R the
         // added ones (merged into an equal fact where there is one). Parts are appended to copies
@@ -245,6 +285,18 @@ private:
             rule->conditions.push_back(std::move(nac));
         }
         rule->exprs.resize(im_.domain->schema->num_attr_types());
+        if (im_.pddl_domain.has_costs()) {
+            rewrite::Cost cost;
+            std::vector<std::string> fluents;
+            for (const auto& c : a_.cost) {
+                cost.constant += c.number;
+                if (c.fluent) {
+                    fluents.push_back(c.to_string());
+                }
+            }
+            cost.depends_on = fmt::format("{}", fmt::join(fluents, " + "));
+            rule->cost = std::move(cost);
+        }
         Variant out;
         std::vector<int> param_index(id.blocks, -1);
         for (std::size_t i = 0; i < a_.params.size(); ++i) {
@@ -264,21 +316,6 @@ private:
         }
         out.rule = std::move(rule);
         return out;
-    }
-
-    /// The morphism sending each part of a (a prefix of b's parts, object by object) to itself.
-    static hom::ACSetMorphism inclusion(const ACSet& a, const ACSet& b) {
-        hom::ACSetMorphism m;
-        const Schema& s = a.schema();
-        m.components.resize(s.num_obs());
-        for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
-            for (Part p = 0; p < a.num_parts(ObId(o)); ++p) {
-                m.components[o].push_back(p);
-            }
-            CATPLAN_ASSERT(a.num_parts(ObId(o)) <= b.num_parts(ObId(o)), "not a prefix");
-        }
-        m.var_components.resize(s.num_attr_types());
-        return m;
     }
 
     const Import& im_;
@@ -320,7 +357,7 @@ std::shared_ptr<ACSet> make_state(const Import& im, const std::vector<TypedName>
     std::unordered_map<std::string, std::size_t> index;
     for (const auto& o : objects) {
         index[o.name] = ents.size();
-        ents.push_back(add_entity(im, *x, o.type, o.name, true));
+        ents.push_back(add_entity(im, *x, {o.type}, o.name, true));
     }
     std::set<Fact> facts;
     for (const auto& a : atoms) {
@@ -351,20 +388,42 @@ std::vector<TypedName> mentioned(const Domain& d, const Problem& p,
     return out;
 }
 
-/// im with the problem's states (on im's domain).
+/// im with the problem's states (on im's domain): the goal of its positive literals, and one
+/// goal condition per negative literal (the goal with that fact, which must not extend).
 void add_problem(Import& im, const Problem& problem) {
     im.pddl_problem = problem;
     std::vector<TypedName> objects = im.pddl_domain.constants;
     objects.insert(objects.end(), problem.objects.begin(), problem.objects.end());
     std::vector<Atom> goal_atoms;
     for (const auto& l : problem.goal) {
-        goal_atoms.push_back(l.atom);
+        if (l.positive) {
+            goal_atoms.push_back(l.atom);
+        }
     }
     auto p = std::make_shared<plan::Problem>();
     p->name = problem.name;
     p->domain = im.domain;
     p->initial = make_state(im, objects, problem.init);
-    p->goal = make_state(im, mentioned(im.pddl_domain, problem, goal_atoms), goal_atoms);
+    auto goal_objects = mentioned(im.pddl_domain, problem, goal_atoms);
+    p->goal = make_state(im, goal_objects, goal_atoms);
+    for (const auto& l : problem.goal) {
+        if (l.positive) {
+            continue;
+        }
+        // G's objects and facts first, so that G is a prefix of N.
+        auto n_atoms = goal_atoms;
+        n_atoms.push_back(l.atom);
+        auto n_objects = goal_objects;
+        for (const auto& o : mentioned(im.pddl_domain, problem, {l.atom})) {
+            if (std::none_of(n_objects.begin(), n_objects.end(),
+                             [&](const TypedName& x) { return x.name == o.name; })) {
+                n_objects.push_back(o);
+            }
+        }
+        auto n = make_state(im, n_objects, n_atoms);
+        rewrite::ApplicationCondition c{l.to_string(), true, *n, inclusion(*p->goal, *n), l.range};
+        p->goal_conditions.push_back(std::move(c));
+    }
     p->range = problem.range;
     im.problem = p;
 }

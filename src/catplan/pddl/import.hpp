@@ -1,12 +1,22 @@
 #pragma once
 // PDDL -> catplan: a domain becomes a schema and DPO rules, a problem an initial and a goal state.
 //
-// Schema. Each type is an object (`object` is the root); a subtype has an is-a hom to its parent
+// Schema. Each type is an object (`object` is the root); a subtype has an is-a hom to each parent
 // (`block_is_object`), as the paper's Kitchenworld does; each type carries an attribute
-// `<type>_name : Name` holding the PDDL name of the object. A predicate of arity n is an object
-// with n homs `<p>_1 .. <p>_n` into its argument types; a nullary predicate is an object without
-// homs. A PDDL object `a - block` is one part of `block` and one of each ancestor, linked by the
-// is-a homs, all named `a` with name attribute "a"; a fact `(on a b)` is one part of `on`.
+// `<type>_name : Name` holding the PDDL name of the object. A union type `(either a b)` is the
+// object `either_a_b`, with the homs `a_is_either_a_b` and `b_is_either_a_b` from its members
+// (pddl.hpp), so that its parts are exactly the objects of type a or b. A predicate of arity n
+// is an object with n homs `<p>_1 .. <p>_n` into its argument types; a nullary predicate is an
+// object without homs. A PDDL object `a - block` is one part of `block` and one of each ancestor,
+// linked by the is-a homs, all named `a` with name attribute "a"; a fact `(on a b)` is one part of
+// `on`.
+//
+// Costs. A domain whose actions say what they cost (`(increase (total-cost) ...)`) gives every
+// rule a rewrite::Cost (0 for an action that says nothing): its constant, and the function terms
+// that depend on a problem's values, as written; costs.hpp computes a ground step's cost.
+//
+// Goals. A problem's negative goal `(not (on a b))` is a goal condition (plan::Problem's
+// goal_conditions): the goal with the fact added, which must not extend the goal's embedding.
 //
 // The name attribute makes the goal and the domain's constants refer to *these* objects (a
 // morphism must preserve concrete values), while a rule's parameters leave it unset, which matches
@@ -72,7 +82,8 @@ struct Import {
     /// Where PDDL names went in the schema: types (with their is-a hom to the parent and their
     /// name attribute), predicates and their argument homs, and the attribute type of names.
     std::unordered_map<std::string, ObId> type_ob, predicate_ob;
-    std::unordered_map<std::string, HomId> is_a;
+    /// Per type: its is-a homs, one per parent (Type::parents' order).
+    std::unordered_map<std::string, std::vector<HomId>> is_a;
     std::unordered_map<std::string, AttrId> name_attr;
     std::unordered_map<std::string, std::vector<HomId>> predicate_homs;
     AttrTypeId name_type;

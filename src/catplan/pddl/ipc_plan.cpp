@@ -1,6 +1,7 @@
 #include "catplan/pddl/ipc_plan.hpp"
 
 #include "catplan/base/unicode.hpp"
+#include "catplan/pddl/costs.hpp"
 #include "catplan/pddl/steps.hpp"
 #include "catplan/plan/validate.hpp"
 #include "catplan/rewrite/dpo.hpp"
@@ -223,19 +224,6 @@ private:
     IpcStep step_;
 };
 
-/// The action's atom with the step's arguments in place of its parameters.
-Atom ground(const Action& a, const Atom& atom, const IpcStep& s) {
-    Atom g = atom;
-    for (auto& t : g.args) {
-        for (std::size_t i = 0; t.variable && i < a.params.size(); ++i) {
-            if (a.params[i].name == t.name) {
-                t = Term{s.args[i], false, t.range};
-            }
-        }
-    }
-    return g;
-}
-
 struct StepProblem {
     SourceRange at;
     std::string message;
@@ -290,6 +278,18 @@ std::optional<std::string> false_precondition(const Import& im, const acset::ACS
 
 } // namespace
 
+Atom ground(const Action& a, const Atom& atom, const IpcStep& s) {
+    Atom g = atom;
+    for (auto& t : g.args) {
+        for (std::size_t i = 0; t.variable && i < a.params.size(); ++i) {
+            if (a.params[i].name == t.name) {
+                t = Term{s.args[i], false, t.range};
+            }
+        }
+    }
+    return g;
+}
+
 std::string IpcStep::to_string() const {
     std::string s = "(" + action;
     for (const auto& a : args) {
@@ -319,11 +319,17 @@ bool check_ipc_plan(const Import& import, const IpcPlan& plan, DiagnosticSink& s
 }
 
 std::string write_ipc_plan(const IpcPlan& plan) {
+    PlanCost cost;
+    cost.total = static_cast<std::int64_t>(plan.size());
+    return write_ipc_plan(plan, cost);
+}
+
+std::string write_ipc_plan(const IpcPlan& plan, const PlanCost& cost) {
     std::string out;
     for (const auto& s : plan) {
         out += s.to_string() + "\n";
     }
-    return out + fmt::format("; cost = {} (unit cost)\n", plan.size());
+    return out + cost_line(cost);
 }
 
 Result<IpcPlan> to_ipc_plan(const Import& import, const plan::Plan& plan) {
@@ -375,6 +381,7 @@ bool holds(const Import& import, const acset::ACSet& x, const Atom& atom) {
 IpcValidation validate_ipc_plan(const Import& im, const IpcPlan& plan) {
     CATPLAN_ASSERT(im.problem != nullptr, "validation needs an imported problem");
     IpcValidation v;
+    v.cost.unit = unit_cost(im.pddl_domain, *im.pddl_problem);
     acset::ACSet x = *im.problem->initial;
     for (std::size_t i = 0; i < plan.size() && !v.failed_step; ++i) {
         const IpcStep& s = plan[i];
@@ -388,6 +395,12 @@ IpcValidation validate_ipc_plan(const Import& im, const IpcPlan& plan) {
         if (auto why = false_precondition(im, x, *im.pddl_domain.find_action(s.action), s)) {
             v.failed_step = i;
             v.reason = fmt::format("{}: {}", prefix, *why);
+            break;
+        }
+        auto cost = step_cost(im.pddl_domain, *im.pddl_problem, s);
+        if (!cost) {
+            v.failed_step = i;
+            v.reason = fmt::format("{}: {}", prefix, cost.error());
             break;
         }
         std::string last = "no rule variant fits the arguments";
@@ -405,6 +418,8 @@ IpcValidation validate_ipc_plan(const Import& im, const IpcPlan& plan) {
             auto r = rewrite::rewrite_in_place(*var.rule, x, *m);
             CATPLAN_ASSERT(r.has_value(), "a resolved match applies");
             v.plan.steps.push_back(std::move(*step));
+            v.cost.steps.push_back(*cost);
+            v.cost.total += *cost;
             applied = true;
             break;
         }
@@ -417,9 +432,9 @@ IpcValidation validate_ipc_plan(const Import& im, const IpcPlan& plan) {
     if (!v.failed_step) {
         v.goal_reached = true;
         for (const auto& l : im.pddl_problem->goal) {
-            if (!holds(im, x, l.atom)) {
+            if (holds(im, x, l.atom) != l.positive) {
                 v.goal_reached = false;
-                v.reason = fmt::format("goal not reached: {} does not hold", l.atom.to_string());
+                v.reason = fmt::format("goal not reached: {} does not hold", l.to_string());
                 break;
             }
         }

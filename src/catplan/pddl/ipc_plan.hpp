@@ -19,6 +19,7 @@
 // `step 3 (unstack e d): precondition (on e d) does not hold`.
 
 #include "catplan/base/diagnostic.hpp"
+#include "catplan/pddl/costs.hpp"
 #include "catplan/pddl/import.hpp"
 #include "catplan/plan/domain.hpp"
 
@@ -50,8 +51,15 @@ std::optional<IpcPlan> parse_ipc_plan(std::uint32_t file, const SourceManager& s
 /// or types of arguments (located at the step's text); returns whether there was none.
 bool check_ipc_plan(const Import& import, const IpcPlan& plan, DiagnosticSink& sink);
 
-/// The plan one step per line, ending with `; cost = N (unit cost)`.
+/// The plan one step per line, ending with `; cost = N (unit cost)` (N steps).
 std::string write_ipc_plan(const IpcPlan& plan);
+
+/// The plan one step per line, ending with its cost line (costs.hpp: `; cost = 12 (general
+/// cost)`).
+std::string write_ipc_plan(const IpcPlan& plan, const PlanCost& cost);
+
+/// The action's atom (or function term) with the step's arguments in place of its parameters.
+Atom ground(const Action& a, const Atom& atom, const IpcStep& s);
 
 /// The PDDL steps of a plan found on the imported domain (rule variants back to their actions);
 /// fails when a step's rule is not one of the import's.
@@ -65,6 +73,8 @@ struct IpcValidation {
     std::string reason;
     /// The rule-level plan (the variant applied at each step that applied).
     plan::Plan plan;
+    /// What the steps that applied cost (costs.hpp).
+    PlanCost cost;
     /// The last state reached.
     std::optional<acset::ACSet> final_state;
 };

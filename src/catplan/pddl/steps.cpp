@@ -3,6 +3,7 @@
 #include "catplan/plan/validate.hpp"
 #include "catplan/rewrite/dpo.hpp"
 
+#include <algorithm>
 #include <fmt/format.h>
 #include <map>
 
@@ -61,8 +62,38 @@ plan::Plan rule_plan(const Import& im, const IpcPlan& plan) {
     return out;
 }
 
+namespace {
+
+/// The facts of n.n_state outside the image of n : goal -> N, as ground atoms.
+std::vector<Atom> added_facts(const Import& im, const rewrite::ApplicationCondition& c) {
+    std::vector<Atom> out;
+    const acset::ACSet& x = c.n_state;
+    for (const auto& pred : im.pddl_domain.predicates) {
+        ObId ob = im.predicate_ob.at(pred.name);
+        const auto& image = c.n.components[ob.index()];
+        const auto& homs = im.predicate_homs.at(pred.name);
+        for (Part p = 0; p < x.num_parts(ob); ++p) {
+            if (std::find(image.begin(), image.end(), p) != image.end()) {
+                continue;
+            }
+            Atom a{pred.name, {}, {}};
+            for (HomId h : homs) {
+                Part q = x.subpart(h, p);
+                ObId type = x.schema().hom(h).codom;
+                a.args.push_back(
+                    {q == kNoPart ? "?" : std::string(x.part_name(type, q)), false, {}});
+            }
+            out.push_back(std::move(a));
+        }
+    }
+    return out;
+}
+
+} // namespace
+
 Problem problem_of(const Import& im, std::string name, const acset::ACSet& initial,
-                   const acset::ACSet& goal) {
+                   const acset::ACSet& goal,
+                   const std::vector<rewrite::ApplicationCondition>& conditions) {
     Problem p;
     p.name = std::move(name);
     p.domain_name = im.pddl_domain.name;
@@ -92,6 +123,17 @@ Problem problem_of(const Import& im, std::string name, const acset::ACSet& initi
     for (auto& a : im.facts(goal)) {
         p.goal.push_back({std::move(a), true, {}});
     }
+    // A condition that adds one fact is a negative goal; one that adds several would be a negated
+    // conjunction, which PDDL's goals cannot say without :disjunctive-preconditions.
+    for (const auto& c : conditions) {
+        auto added = added_facts(im, c);
+        if (c.negative && added.size() == 1) {
+            p.goal.push_back({std::move(added[0]), false, {}});
+        } else {
+            ++p.unwritten_goal_conditions;
+        }
+    }
+    p.metric = im.pddl_domain.has_costs();
     return p;
 }
 
@@ -105,11 +147,19 @@ std::string write_problem(const Problem& p) {
     for (const auto& a : p.init) {
         out += "\n    " + a.to_string();
     }
+    if (p.metric && std::none_of(p.values.begin(), p.values.end(), [](const FunctionValue& v) {
+            return v.term.predicate == "total-cost";
+        })) {
+        out += "\n    (= (total-cost) 0)";
+    }
+    for (const auto& v : p.values) {
+        out += fmt::format("\n    (= {} {})", v.term.to_string(), v.value);
+    }
     out += ")\n  (:goal (and";
     for (const auto& l : p.goal) {
         out += "\n    " + l.to_string();
     }
-    return out + ")))\n";
+    return out + (p.metric ? "))\n  (:metric minimize (total-cost)))\n" : ")))\n");
 }
 
 } // namespace catplan::pddl

@@ -25,9 +25,12 @@ std::optional<plan::Step> variant_step(const Variant& v, const IpcStep& s);
 plan::Plan rule_plan(const Import& im, const IpcPlan& plan);
 
 /// A PDDL problem of the import's domain whose initial state is `initial` and whose goal is the
-/// facts of `goal` (both states of the imported schema, objects named by their part names).
+/// facts of `goal` (both states of the imported schema, objects named by their part names), with
+/// `(not f)` for each negative goal condition that adds one fact f (the others are counted in
+/// Problem::unwritten_goal_conditions), and the cost metric when the domain's actions have costs.
 Problem problem_of(const Import& im, std::string name, const acset::ACSet& initial,
-                   const acset::ACSet& goal);
+                   const acset::ACSet& goal,
+                   const std::vector<rewrite::ApplicationCondition>& conditions = {});
 
 /// A problem as a PDDL problem file.
 std::string write_problem(const Problem& p);

@@ -3,6 +3,7 @@
 #include "catplan/hom/hom_search.hpp"
 #include "catplan/hom/isomorphism.hpp"
 #include "catplan/plan/state_registry.hpp"
+#include "catplan/plan/validate.hpp"
 #include "catplan/rewrite/dpo.hpp"
 
 #include <deque>
@@ -60,9 +61,13 @@ private:
     std::size_t size_ = 0;
 };
 
-bool satisfies(const ACSet* goal, const ACSet& x) {
+bool satisfies(const Problem& problem, const ACSet& x) {
+    const ACSet* goal = problem.goal.get();
     if (goal == nullptr) {
         return true;
+    }
+    if (!problem.goal_conditions.empty()) {
+        return embed_goal(*goal, problem.goal_conditions, x).has_value();
     }
     hom::HomSearchOptions opt;
     opt.monic_all = true;
@@ -92,7 +97,7 @@ private:
         auto root = registry_.insert(*problem_.initial).id;
         info_.push_back({});
         info_[root].h = evaluate(root);
-        if (satisfies(problem_.goal.get(), registry_.state(root))) {
+        if (satisfies(problem_, registry_.state(root))) {
             return finish(SearchStatus::Solved, root);
         }
         push(root, 0);
@@ -111,7 +116,7 @@ private:
             node.closed = true;
             stats_.f = key;
             if (options_.search == SearchKind::AStar &&
-                satisfies(problem_.goal.get(), registry_.state(e.state))) {
+                satisfies(problem_, registry_.state(e.state))) {
                 return finish(SearchStatus::Solved, e.state);
             }
             ++stats_.expanded;
@@ -173,7 +178,7 @@ private:
                 info_.push_back(NodeInfo{id, ri, mi, g, 0, false});
                 info_[ins.id].h = evaluate(ins.id);
                 if (options_.search != SearchKind::AStar &&
-                    satisfies(problem_.goal.get(), registry_.state(ins.id))) {
+                    satisfies(problem_, registry_.state(ins.id))) {
                     return ins.id;
                 }
                 push(ins.id, g);

@@ -5,7 +5,8 @@
 // schema; a plan is a list of steps `unstack(E, D)`, whose arguments bind the rule's parameters to
 // parts of the current state by name. The rest of the match is completed by search and must be
 // unique. A plan is valid when every step's match exists and satisfies the gluing conditions, and
-// the goal embeds monically (monic on objects only; the goal's unknowns may bind to any value).
+// the goal embeds monically (monic on objects only; the goal's unknowns may bind to any value) by a
+// morphism that meets the problem's goal conditions.
 
 #include "catplan/acset/acset.hpp"
 #include "catplan/base/diagnostic.hpp"
@@ -41,6 +42,10 @@ struct Problem {
     std::shared_ptr<const ACSet> initial;
     std::shared_ptr<const ACSet> goal;
     SourceRange range;
+    /// Conditions on the goal's embedding m : goal -> X (each n : goal -> N): the goal holds
+    /// where some m meets them all, a negative one not extending along n (PDDL's negative goals,
+    /// `(not (on a b))`). Empty for most problems.
+    std::vector<rewrite::ApplicationCondition> goal_conditions = {};
 };
 
 using ProblemPtr = std::shared_ptr<const Problem>;

@@ -391,6 +391,33 @@ Result<ACSetMorphism> embed_goal(const ACSet& goal, const ACSet& x) {
     return fail(missing ? fmt::format("nothing satisfies {}", *missing) : m.error());
 }
 
+Result<ACSetMorphism> embed_goal(const ACSet& goal,
+                                 const std::vector<rewrite::ApplicationCondition>& conditions,
+                                 const ACSet& x) {
+    if (conditions.empty()) {
+        return embed_goal(goal, x);
+    }
+    // The first embedding that meets the conditions; the reason the last one did not, else.
+    std::optional<ACSetMorphism> found;
+    std::string broken;
+    hom::for_each_homomorphism(goal, x, monic_options({}), [&](const ACSetMorphism& m) {
+        auto why = rewrite::condition_problem(conditions, goal, x, m);
+        if (!why) {
+            found = m;
+            return false;
+        }
+        broken = *why;
+        return true;
+    });
+    if (found) {
+        return std::move(*found);
+    }
+    if (broken.empty()) {
+        return embed_goal(goal, x);
+    }
+    return fail(broken);
+}
+
 Validation validate_plan(const Problem& problem, const Plan& plan, const ValidateOptions& options) {
     CATPLAN_ASSERT(problem.initial != nullptr && problem.domain != nullptr,
                    "a problem needs an initial state and a domain");
@@ -434,7 +461,7 @@ Validation validate_plan(const Problem& problem, const Plan& plan, const Validat
         if (problem.goal == nullptr) {
             v.goal_reached = true;
         } else {
-            auto g = embed_goal(*problem.goal, x);
+            auto g = embed_goal(*problem.goal, problem.goal_conditions, x);
             v.goal_reached = g.has_value();
             if (!g) {
                 v.reason = fmt::format("goal not reached: {}", g.error());

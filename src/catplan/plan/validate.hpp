@@ -44,6 +44,13 @@ std::optional<std::string> explain_no_embedding(const ACSet& pattern, const ACSe
 /// the reason there is none, naming the first goal statement that cannot be satisfied.
 Result<ACSetMorphism> embed_goal(const ACSet& goal, const ACSet& x);
 
+/// A monic morphism goal -> x that meets the conditions (each n : goal -> N; Problem's
+/// goal_conditions), or the reason there is none: a goal statement nothing satisfies, or the
+/// condition every embedding breaks.
+Result<ACSetMorphism> embed_goal(const ACSet& goal,
+                                 const std::vector<rewrite::ApplicationCondition>& conditions,
+                                 const ACSet& x);
+
 /// How describe_match calls the parts it binds.
 struct MatchWords {
     /// A word for part p of ob in a state; empty: the part's label (`E`, `#3`).

@@ -1,4 +1,5 @@
 #include "catplan/plan/detail/test_domains.hpp"
+#include "catplan/plan/search.hpp"
 #include "catplan/plan/validate.hpp"
 
 #include <gtest/gtest.h>
@@ -116,6 +117,52 @@ TEST(Validate, GoalNotReached) {
     EXPECT_FALSE(v.goal_reached);
     EXPECT_FALSE(v.failed_step);
     EXPECT_EQ(v.reason, "goal not reached: nothing satisfies On #1 (onL(#1) == A)");
+}
+
+// A on B, and B not on the table: a negative goal condition (PDDL's (not (ontable b))).
+ProblemPtr a_on_b_not_on_table() {
+    auto p = std::make_shared<Problem>(
+        *blocks_problem(blocks_domain(true), kABC, {{0}, {1}, {2}}, {{1, 0}}));
+    ACSet n = *p->goal;
+    add_fact(n, kB.table, kB.table_of, *n.find_part(kB.block, "B"), "");
+    hom::ACSetMorphism g_to_n;
+    for (std::uint32_t o = 0; o < n.schema().num_obs(); ++o) {
+        g_to_n.components.emplace_back();
+        for (Part q = 0; q < p->goal->num_parts(ObId(o)); ++q) {
+            g_to_n.components.back().push_back(q); // the goal's parts come first in N
+        }
+    }
+    g_to_n.var_components.resize(n.schema().num_attr_types());
+    p->goal_conditions.push_back({"B not on the table", true, std::move(n), g_to_n, {}});
+    return p;
+}
+
+TEST(Validate, AGoalConditionMustNotExtendTheGoalsEmbedding) {
+    auto p = a_on_b_not_on_table();
+    auto short_plan = plan_of({st("pickup", {"A"}), st("stack", {"A", "B"})});
+    auto v = validate_plan(*p, short_plan);
+    EXPECT_FALSE(v.goal_reached);
+    EXPECT_EQ(v.reason, "goal not reached: the negative condition 'B not on the table' holds");
+    // Without the condition the same plan reaches the goal.
+    auto q = std::make_shared<Problem>(*p);
+    q->goal_conditions.clear();
+    EXPECT_TRUE(validate_plan(*q, short_plan).valid);
+    auto longer = plan_of({st("pickup", {"B"}), st("stack", {"B", "C"}), st("pickup", {"A"}),
+                           st("stack", {"A", "B"})});
+    EXPECT_TRUE(validate_plan(*p, longer).valid);
+}
+
+TEST(Validate, BothSearchesPlanForAGoalCondition) {
+    auto p = a_on_b_not_on_table();
+    for (bool ground : {true, false}) {
+        SearchOptions opt;
+        opt.ground = ground;
+        auto r = find_plan(*p, opt);
+        ASSERT_EQ(r.status, SearchStatus::Solved) << ground;
+        EXPECT_EQ(r.path, ground ? "grounded" : "C-set") << r.path_reason;
+        EXPECT_EQ(r.plan->steps.size(), 4U) << r.plan->to_string();
+        EXPECT_TRUE(validate_plan(*p, *r.plan).valid) << r.plan->to_string();
+    }
 }
 
 TEST(Validate, EmptyPlanOnSatisfiedGoal) {

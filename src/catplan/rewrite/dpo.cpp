@@ -78,34 +78,7 @@ bool is_injective(const ACSetMorphism& m, const ACSet& dom) {
 
 std::optional<std::string> condition_problem(const Rule& rule, const ACSet& x,
                                              const ACSetMorphism& m) {
-    const auto& s = rule.L.schema();
-    for (const auto& c : rule.conditions) {
-        hom::HomSearchOptions opt;
-        opt.monic_all = true;
-        for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
-            for (Part p = 0; p < rule.L.num_parts(ObId(o)); ++p) {
-                opt.bind(ObId(o), c.n(ObId(o), p), m(ObId(o), p));
-            }
-        }
-        for (std::uint32_t t = 0; t < s.num_attr_types(); ++t) {
-            AttrTypeId ty(t);
-            for (std::uint32_t v = 0; v < rule.L.num_vars(ty); ++v) {
-                const Value& nv = c.n.var(ty, v);
-                if (nv.is_var()) {
-                    opt.bind_var(ty, nv.var_index(), m.var(ty, v));
-                }
-            }
-        }
-        bool extends = hom::is_homomorphic(c.n_state, x, opt);
-        std::string label = c.name.empty() ? "an application condition" : "'" + c.name + "'";
-        if (c.negative && extends) {
-            return fmt::format("the negative condition {} holds", label);
-        }
-        if (!c.negative && !extends) {
-            return fmt::format("the positive condition {} fails", label);
-        }
-    }
-    return std::nullopt;
+    return rewrite::condition_problem(rule.conditions, rule.L, x, m);
 }
 
 std::optional<std::string> validity_problem(const Shape& shape, const ACSet& x,
@@ -283,6 +256,39 @@ Result<std::vector<std::vector<Value>>> application_values(const Shape& shape,
 }
 
 } // namespace detail
+
+std::optional<std::string> condition_problem(const std::vector<ApplicationCondition>& conditions,
+                                             const ACSet& pattern, const ACSet& x,
+                                             const ACSetMorphism& m) {
+    const auto& s = pattern.schema();
+    for (const auto& c : conditions) {
+        hom::HomSearchOptions opt;
+        opt.monic_all = true;
+        for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
+            for (Part p = 0; p < pattern.num_parts(ObId(o)); ++p) {
+                opt.bind(ObId(o), c.n(ObId(o), p), m(ObId(o), p));
+            }
+        }
+        for (std::uint32_t t = 0; t < s.num_attr_types(); ++t) {
+            AttrTypeId ty(t);
+            for (std::uint32_t v = 0; v < pattern.num_vars(ty); ++v) {
+                const Value& nv = c.n.var(ty, v);
+                if (nv.is_var()) {
+                    opt.bind_var(ty, nv.var_index(), m.var(ty, v));
+                }
+            }
+        }
+        bool extends = hom::is_homomorphic(c.n_state, x, opt);
+        std::string label = c.name.empty() ? "an application condition" : "'" + c.name + "'";
+        if (c.negative && extends) {
+            return fmt::format("the negative condition {} holds", label);
+        }
+        if (!c.negative && !extends) {
+            return fmt::format("the positive condition {} fails", label);
+        }
+    }
+    return std::nullopt;
+}
 
 std::vector<ACSetMorphism> find_matches(const Rule& rule, const ACSet& x,
                                         const MatchOptions& options) {

@@ -58,6 +58,12 @@ std::vector<ACSetMorphism> find_matches(const Rule& rule, const ACSet& x,
 std::optional<std::string> match_problem(const Rule& rule, const ACSet& x, const ACSetMorphism& m,
                                          bool monic = true);
 
+/// Why m : pattern -> x breaks one of the conditions (each n : pattern -> N: a negative one must
+/// not extend m to a monic N -> x, a positive one must), or nullopt when it meets them all.
+std::optional<std::string> condition_problem(const std::vector<ApplicationCondition>& conditions,
+                                             const ACSet& pattern, const ACSet& x,
+                                             const ACSetMorphism& m);
+
 struct Rewrite {
     ACSet result;
     ACSetMorphism r_to_result; // R -> Y

@@ -30,6 +30,7 @@
 #include "catplan/base/source.hpp"
 #include "catplan/hom/morphism.hpp"
 
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -95,6 +96,14 @@ struct Parameter {
     Part part;
 };
 
+/// What applying a rule costs, when the rule says (PDDL's `(increase (total-cost) N)`).
+struct Cost {
+    std::int64_t constant = 0;
+    /// Not empty when the cost also depends on a problem's values, as written
+    /// ("(road-length ?from ?to)"): a PDDL problem gives them, the rule alone does not.
+    std::string depends_on;
+};
+
 /// How a rule treats parts of X that refer to a part it deletes. DPO: the match is rejected (the
 /// dangling condition). SPO (single pushout, reference §4.5): they are deleted too, and so on
 /// transitively (dangling edges are removed); a match whose cascade would reach a kept part is
@@ -116,6 +125,9 @@ struct Rule {
     /// changes nothing (detail/relations.hpp).
     std::vector<ObId> relations;
     SourceRange range;
+    /// What a step of the rule costs, when it says (nullopt: nothing said, a step counts 1).
+    /// Migration carries it to the migrated rule.
+    std::optional<Cost> cost;
 
     /// A rule with empty states on a schema (to be filled by a builder or the elaborator).
     explicit Rule(const schema::SchemaPtr& s) : L(s), K(s), R(s) {}

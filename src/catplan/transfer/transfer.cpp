@@ -57,6 +57,24 @@ struct ActionPair {
     std::vector<std::optional<migrate::TupleOrigins>> l_origins, r_origins; // by target object
 };
 
+/// Δ_F of a goal's conditions: each Δ_F(n) : Δ_F(G) -> Δ_F(N).
+std::vector<rewrite::ApplicationCondition>
+migrate_conditions(const SchemaMap& f, const ACSet& goal,
+                   const std::vector<rewrite::ApplicationCondition>& conditions) {
+    std::vector<rewrite::ApplicationCondition> out;
+    if (conditions.empty()) {
+        return out;
+    }
+    migrate::MigratedState g = migrate::migrate_state(f, goal);
+    for (const auto& c : conditions) {
+        migrate::MigratedState n = migrate::migrate_state(f, c.n_state);
+        auto m = migrate::migrate(f, c.n, g, n);
+        CATPLAN_ASSERT(m.has_value(), "Δ_F of a monic goal -> N is a morphism");
+        out.push_back({c.name, c.negative, std::move(n.state), std::move(*m), c.range});
+    }
+    return out;
+}
+
 std::vector<std::optional<migrate::TupleOrigins>> origins_of(const SchemaMap& f, const ACSet& x) {
     auto ms = migrate::migrate_state(f, x);
     std::vector<std::optional<migrate::TupleOrigins>> out;
@@ -203,6 +221,8 @@ public:
         }
         out_.target_initial = std::make_shared<const ACSet>(y0);
         out_.target_goal = std::make_shared<const ACSet>(migrate::migrate(f_, *problem_.goal));
+        out_.target_goal_conditions =
+            migrate_conditions(f_, *problem_.goal, problem_.goal_conditions);
         out_.timings.migrate_ms = ms_since(t0);
         x_.emplace(std::move(x0));
         y_.emplace(std::move(y0));
@@ -504,7 +524,7 @@ private:
             }
             return f;
         }
-        auto g = plan::embed_goal(*problem_.goal, x_->state());
+        auto g = plan::embed_goal(*problem_.goal, problem_.goal_conditions, x_->state());
         if (g) {
             return std::nullopt;
         }
@@ -613,7 +633,7 @@ void judge(TransferResult& out, const ACSet& y, std::optional<Fault> source,
                  fmt::format("the target state is not Δ_F(X{}): {}", d.step + 1, d.difference())});
         }
     }
-    auto embedding = plan::embed_goal(*out.target_goal, y);
+    auto embedding = plan::embed_goal(*out.target_goal, out.target_goal_conditions, y);
     if (!embedding) {
         v.faults.push_back(
             {Fault::Kind::Goal, std::nullopt, {}, "goal not reached: " + embedding.error()});
@@ -621,22 +641,41 @@ void judge(TransferResult& out, const ACSet& y, std::optional<Fault> source,
     if (source) {
         v.faults.push_back(std::move(*source));
     }
+    // A goal condition is one more statement: met when some embedding of the goal avoids it.
+    auto count_conditions = [&](const ACSet& goal, const auto& conditions) {
+        for (const auto& c : conditions) {
+            ++v.goal.total;
+            if (plan::embed_goal(goal, {c}, y)) {
+                ++v.goal.satisfied;
+            } else {
+                v.goal.unsatisfied.push_back(c.name);
+            }
+        }
+    };
     if (options.goal) {
         CATPLAN_ASSERT(&options.goal->schema() == &y.schema(),
                        "the intended goal must be on the map's target schema");
         v.goal = goal_satisfaction(*options.goal, y);
+        count_conditions(*options.goal, options.goal_conditions);
         v.goal_name = options.goal_name;
         if (v.goal.satisfied != v.goal.total) {
             v.faults.push_back({Fault::Kind::IntendedGoal,
                                 std::nullopt,
                                 {},
                                 fmt::format("the intended goal {} is not satisfied", v.goal_name)});
+        } else if (auto m = plan::embed_goal(*options.goal, options.goal_conditions, y); !m) {
+            v.faults.push_back(
+                {Fault::Kind::IntendedGoal,
+                 std::nullopt,
+                 {},
+                 fmt::format("the intended goal {} is not satisfied: {}", v.goal_name, m.error())});
         }
     } else if (embedding) {
-        v.goal.total = goal_statements(*out.target_goal).size();
+        v.goal.total = goal_statements(*out.target_goal).size() + out.target_goal_conditions.size();
         v.goal.satisfied = v.goal.total;
     } else {
         v.goal = goal_satisfaction(*out.target_goal, y);
+        count_conditions(*out.target_goal, out.target_goal_conditions);
     }
     v.status = v.faults.empty() ? Verdict::Status::Valid : Verdict::Status::Invalid;
     out.timings.validate_ms = ms_since(t0);
@@ -721,6 +760,7 @@ Replan replan(const TransferResult& t, const plan::SearchOptions& options) {
     problem.domain = t.target_domain.domain;
     problem.initial = t.target_initial;
     problem.goal = t.target_goal;
+    problem.goal_conditions = t.target_goal_conditions;
     Replan out;
     auto t0 = Clock::now();
     out.search = plan::find_plan(problem, options);

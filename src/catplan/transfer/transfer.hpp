@@ -20,9 +20,13 @@
 //      decide); the first step after which they differ is reported with what differs. With
 //      follow_source, Y_i := Δ_F(X_i) after every step instead, and every step is checked to
 //      reach it.
-//   3. the goal is checked with a monic morphism Δ_F(G) -> Y_n and, when the caller states the
-//      goal intended in the target domain (TransferOptions::goal), that goal too; goal
-//      satisfaction (the paper's Metric 1, goal.hpp) is computed for the goal judged by.
+//   3. the goal is checked with a monic morphism Δ_F(G) -> Y_n that meets Δ_F of the problem's
+//      goal conditions (its negative goals: each Δ_F(G) -> Δ_F(N) must not extend) and, when
+//      the caller states the goal intended in the target domain (TransferOptions::goal, with its
+//      own conditions), that goal too; goal satisfaction (the paper's Metric 1, goal.hpp) is
+//      computed for the goal judged by, each condition one more statement (met when some
+//      embedding avoids it). Δ_F is not full, so a migrated condition may see less than the
+//      source's did (semantics.md says the same of a rule's NAC).
 // The outcome is one Verdict (verdict.hpp): valid or not, every fault, the goal's figure, the
 // divergences, and the claims with their hypotheses. For a delta map and DPO rules without
 // application conditions, matched monically, Δ_F preserves pushouts, so the transferred plan of
@@ -84,6 +88,9 @@ struct TransferOptions {
     /// then also asks that it be satisfied in the last target state, and goal satisfaction is
     /// measured for it. Null to judge by Δ_F(G) alone.
     std::shared_ptr<const ACSet> goal;
+    /// Conditions on the intended goal's embedding (its negative goals, plan::Problem's
+    /// goal_conditions), each n : goal -> N.
+    std::vector<rewrite::ApplicationCondition> goal_conditions;
     /// The intended goal's name, for the verdict's words ("the intended goal Sandwich is not
     /// satisfied").
     std::string goal_name;
@@ -143,6 +150,8 @@ struct TransferResult {
     MigratedDomain target_domain;
     std::shared_ptr<const ACSet> target_initial; ///< Y_0 = Δ_F(I)
     std::shared_ptr<const ACSet> target_goal;    ///< Δ_F(G)
+    /// Δ_F of the source problem's goal conditions, each Δ_F(n) : Δ_F(G) -> Δ_F(N).
+    std::vector<rewrite::ApplicationCondition> target_goal_conditions;
     /// The steps transferred (all of them, or those before the one the verdict's failed_step
     /// names).
     std::vector<StepTransfer> steps;

@@ -205,7 +205,7 @@ inline ACSet blocks_goal(schema::SchemaPtr s, const std::vector<std::string>& na
     return x;
 }
 
-inline ProblemPtr blocks_problem(DomainPtr d, const std::vector<std::string>& names,
+inline ProblemPtr blocks_problem(const DomainPtr& d, const std::vector<std::string>& names,
                                  const std::vector<std::vector<int>>& init,
                                  const std::vector<std::vector<int>>& goal) {
     auto p = std::make_shared<Problem>();

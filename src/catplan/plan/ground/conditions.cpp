@@ -210,9 +210,105 @@ void finish_actions(Universe& u) {
     actions.resize(kept);
 }
 
+namespace {
+
+// The facts under which each extension of a goal match along a goal condition's n holds, less
+// those the term already asks for; nullopt when one holds whenever the term does (or the
+// condition is positive: the ground goal has no form for it).
+std::optional<std::vector<std::vector<Fact>>>
+condition_clauses(const Universe& u, const rewrite::ApplicationCondition& c, const Match& m,
+                  const std::vector<Fact>& term) {
+    if (!c.negative) {
+        return std::nullopt;
+    }
+    const auto& s = *u.task.problem->domain->schema;
+    const ACSet& goal = *u.task.problem->goal;
+    Pattern pat;
+    pat.p = &c.n_state;
+    pat.fixed.resize(s.num_obs());
+    for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
+        pat.fixed[o].assign(c.n_state.num_parts(ObId(o)), Image{});
+        for (Part g = 0; g < goal.num_parts(ObId(o)); ++g) {
+            pat.fixed[o][c.n(ObId(o), g)] = m.images[o][g];
+        }
+    }
+    pat.bound.resize(s.num_attr_types());
+    for (std::uint32_t t = 0; t < s.num_attr_types(); ++t) {
+        AttrTypeId ty(t);
+        pat.bound[t].assign(c.n_state.num_vars(ty), Value());
+        for (std::uint32_t v = 0; v < goal.num_vars(ty); ++v) {
+            const Value& nv = c.n.var(ty, v);
+            if (nv.is_var()) {
+                pat.bound[t][nv.var_index()] = m.bindings[t][v];
+            }
+        }
+    }
+    std::vector<std::vector<Fact>> clauses;
+    bool always = false;
+    for_each_match(u, pat, [&](const Match& n) {
+        std::vector<Fact> clause;
+        for (const Fact& f : n.facts) {
+            auto it = std::find_if(term.begin(), term.end(),
+                                   [&](const Fact& t) { return t.var == f.var; });
+            if (it != term.end() && it->value != f.value) {
+                return true; // cannot hold together with the term
+            }
+            if (it == term.end()) {
+                clause.push_back(f);
+            }
+        }
+        always = clause.empty();
+        clauses.push_back(std::move(clause));
+        return !always;
+    });
+    if (always) {
+        return std::nullopt;
+    }
+    return clauses;
+}
+
+// The terms that ask, besides `term`, that no clause hold entirely: one fact of each clause takes
+// another value (the disjunction multiplied out); false when there are more than `limit`.
+bool refine(const Task& task, const std::vector<Fact>& term,
+            const std::vector<std::vector<Fact>>& clauses, std::size_t limit,
+            std::set<std::vector<Fact>>& out) {
+    std::vector<std::vector<Fact>> partial{term};
+    for (const auto& clause : clauses) {
+        std::vector<std::vector<Fact>> next;
+        for (const auto& t : partial) {
+            for (const Fact& f : clause) {
+                for (std::uint32_t w = 0; w < task.vars[f.var].size(); ++w) {
+                    auto it = std::find_if(t.begin(), t.end(),
+                                           [&](const Fact& g) { return g.var == f.var; });
+                    if (w == f.value || (it != t.end() && it->value != w)) {
+                        continue;
+                    }
+                    auto grown = t;
+                    if (it == t.end()) {
+                        grown.push_back({f.var, w});
+                    }
+                    std::sort(grown.begin(), grown.end());
+                    next.push_back(std::move(grown));
+                }
+            }
+            if (next.size() > limit) {
+                return false;
+            }
+        }
+        std::sort(next.begin(), next.end());
+        next.erase(std::unique(next.begin(), next.end()), next.end());
+        partial = std::move(next);
+    }
+    out.insert(partial.begin(), partial.end());
+    return out.size() <= limit;
+}
+
+} // namespace
+
 std::optional<std::string> ground_goal(Universe& u, const CompileOptions& options) {
     auto& task = u.task;
     const auto& goal = task.problem->goal;
+    const auto& conditions = task.problem->goal_conditions;
     task.goal.clear();
     if (goal == nullptr) {
         task.goal.push_back({});
@@ -220,14 +316,29 @@ std::optional<std::string> ground_goal(Universe& u, const CompileOptions& option
     }
     Pattern pat;
     pat.p = goal.get();
-    pat.unread = unread_variables(*goal, nullptr);
+    if (conditions.empty()) {
+        pat.unread = unread_variables(*goal, nullptr); // else the conditions may read them
+    }
     std::set<std::vector<Fact>> terms;
     bool too_many = false;
+    bool positive = std::any_of(conditions.begin(), conditions.end(),
+                                [](const auto& c) { return !c.negative; });
+    if (positive) {
+        return std::string("the goal has a positive condition");
+    }
     for_each_match(u, pat, [&](const Match& m) {
         std::vector<Fact> term = m.facts;
         std::sort(term.begin(), term.end());
-        terms.insert(std::move(term));
-        too_many = terms.size() > options.max_goal_terms;
+        // Each negative condition: no extension of m along it may hold.
+        std::vector<std::vector<Fact>> clauses;
+        for (const auto& c : conditions) {
+            auto more = condition_clauses(u, c, m, term);
+            if (!more) {
+                return true; // this match always breaks the condition
+            }
+            clauses.insert(clauses.end(), more->begin(), more->end());
+        }
+        too_many = !refine(task, term, clauses, options.max_goal_terms, terms);
         return !too_many;
     });
     if (too_many) {

@@ -13,6 +13,11 @@ RelaxedTask::RelaxedTask(const Task& task) {
     }
     var_props_ = num_props_;
     relaxed_of_.assign(task.actions.size(), kNone);
+    // Absence is free in the relaxation (no action adds it): in preconditions, effects and goals.
+    auto absent = [&](const Fact& f) {
+        auto kind = task.vars[f.var].kind;
+        return f.value == 0 && (kind == Variable::Kind::Presence || kind == Variable::Kind::Atom);
+    };
     for (ActionId a = 0; a < task.actions.size(); ++a) {
         const Action& act = task.actions[a];
         if (!act.exit.empty()) {
@@ -20,11 +25,6 @@ RelaxedTask::RelaxedTask(const Task& task) {
         }
         RelaxedAction r;
         r.action = a;
-        auto absent = [&](const Fact& f) {
-            auto kind = task.vars[f.var].kind;
-            return f.value == 0 &&
-                   (kind == Variable::Kind::Presence || kind == Variable::Kind::Atom);
-        };
         for (const Fact& f : act.pre) {
             if (!absent(f)) {
                 r.pre.push_back(prop(f));
@@ -48,7 +48,9 @@ RelaxedTask::RelaxedTask(const Task& task) {
     }
     if (task.goal.size() == 1) {
         for (const Fact& f : task.goal[0]) {
-            goal_.push_back(prop(f));
+            if (!absent(f)) {
+                goal_.push_back(prop(f));
+            }
         }
     } else {
         Prop g = num_props_++;
@@ -57,7 +59,9 @@ RelaxedTask::RelaxedTask(const Task& task) {
             RelaxedAction r;
             r.cost = 0;
             for (const Fact& f : term) {
-                r.pre.push_back(prop(f));
+                if (!absent(f)) {
+                    r.pre.push_back(prop(f));
+                }
             }
             r.add.push_back(g);
             actions_.push_back(std::move(r));

@@ -1,0 +1,1 @@
+pddl export tests/pddl/shuttle.cp --problem shuttle-p01

@@ -1,0 +1,1 @@
+pddl export tests/pddl/stacker.cp --problem stacker-p01

@@ -1,0 +1,1 @@
+pddl import tests/pddl/lift-domain.pddl

@@ -1,0 +1,1 @@
+plan tests/pddl/shelving-domain.pddl tests/pddl/shelving-p01.pddl --no-timing

@@ -1,0 +1,1 @@
+plan tests/pddl/stacker-domain.pddl tests/pddl/stacker-p01.pddl --no-timing

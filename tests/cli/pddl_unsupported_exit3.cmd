@@ -1,0 +1,1 @@
+plan tests/pddl/unsupported-domain.pddl tests/pddl/lift-p01.pddl

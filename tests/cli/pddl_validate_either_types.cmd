@@ -1,0 +1,1 @@
+validate tests/pddl/shelving-domain.pddl tests/pddl/shelving-p01.pddl tests/pddl/shelving-p01.plan

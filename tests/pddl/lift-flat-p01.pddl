@@ -1,0 +1,15 @@
+; lift-p01.pddl for the flat-cost lift domain.
+(define (problem lift-p01)
+  (:domain liftflat)
+  (:objects f0 f1 f2 - level
+            slow0 - slow-lift
+            fast0 - fast-lift
+            ann bob - rider)
+  (:init (up f0 f1) (up f0 f2) (up f1 f2)
+         (lift-at slow0 f0) (lift-at fast0 f2)
+         (serves slow0 f0) (serves slow0 f1)
+         (serves fast0 f0) (serves fast0 f1) (serves fast0 f2)
+         (rider-at ann f0) (rider-at bob f2)
+         (= (total-cost) 0))
+  (:goal (and (rider-at ann f1) (rider-at bob f0)))
+  (:metric minimize (total-cost)))

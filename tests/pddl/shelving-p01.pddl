@@ -1,0 +1,11 @@
+; One arm in the hall, a box on r1 to be moved to r3 (r2 lies between them).
+(define (problem shelving-p01)
+  (:domain shelving)
+  (:objects arm1 - arm bay1 - place r1 r2 r3 - rack b1 - box)
+  (:init (arm-at arm1 hall) (free arm1)
+         (linked hall r2)
+         (linked r1 r2) (linked r2 r1) (linked r2 r3) (linked r3 r2)
+         (in r1 bay1) (in r2 bay1) (in r3 bay1)
+         (clear r2) (clear r3)
+         (on b1 r1) (in b1 bay1))
+  (:goal (and (on b1 r3) (in b1 bay1))))

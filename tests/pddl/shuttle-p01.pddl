@@ -1,0 +1,7 @@
+(define (problem shuttle-p01)
+  (:domain shuttle)
+  (:objects ann sh1 rome oslo)
+  (:init (person ann) (shuttle sh1) (city rome) (city oslo)
+         (at ann rome) (at sh1 oslo) (= (total-cost) 0))
+  (:goal (at ann oslo))
+  (:metric minimize (total-cost)))
