@@ -7,13 +7,21 @@
 // none when Y_{i-1} already holds what Δ_F(X_i) says (the 4-operator `pick-up` seen through a map
 // that forgets the gripper).
 //
-// The local plan is found with plan::find_plan (greedy best-first with h_FF by default, within
-// node and time limits); an empty plan is tried first.
+// A repair costs what the step touches, not the size of the state: the local plan is searched
+// first on a focus of Y_{i-1} (focus.hpp: the parts near what the subgoal changes, radius 1, then
+// 2, then 4), and only when no focus gives one on the whole state. Each search is plan::find_plan
+// (greedy best-first with h_FF by default, within node and time limits). A plan found on a focus
+// is replayed on the whole Y_{i-1} as DPO steps and the whole subgoal is checked to embed in the
+// result before it is used; one that fails (a negative condition or a dangling part the focus
+// does not see) is set aside and the next focus tried. An empty plan is tried first.
 
 #include "catplan/acset/acset.hpp"
+#include "catplan/hom/morphism.hpp"
 #include "catplan/plan/domain.hpp"
 #include "catplan/plan/search.hpp"
+#include "catplan/transfer/named_state.hpp"
 
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -29,18 +37,43 @@ struct RepairOptions {
         s.max_seconds = 30;
         return s;
     }();
+    /// The radii of the focuses searched before the whole state, in order (empty: the whole
+    /// state only).
+    std::vector<std::size_t> radii = {1, 2, 4};
 };
 
 /// A repair: the target steps found, or why none were.
 struct Repair {
     bool found = false;
     std::vector<plan::Step> steps; ///< arguments name parts of y by name
+    /// The match of each step in the state the steps before it lead to, from y.
+    std::vector<hom::ACSetMorphism> matches;
+    /// The statistics of the searches, summed (the focuses tried and the whole state).
     plan::SearchStats stats;
+    /// When found on a focus: how many parts of y it kept (focus.hpp); 0 on the whole state.
+    std::size_t focus_parts = 0;
     std::string why; ///< when not found: "the subgoal is unreachable", "time limit reached"
 };
 
-/// A plan in the target domain from y to a state into which subgoal embeds monically.
-Repair repair_step(const plan::DomainPtr& target, const acset::ACSet& y,
-                   const acset::ACSet& subgoal, const RepairOptions& options = {});
+/// Repairs steps of one transfer into one target domain.
+class Repairer {
+public:
+    Repairer(plan::DomainPtr target, RepairOptions options);
+
+    /// A plan in the target domain from y to a state into which subgoal embeds monically.
+    Repair repair(const NamedState& y, const acset::ACSet& subgoal);
+
+    /// How many repairs were found on a focus and how many on the whole state.
+    std::size_t focused() const { return focused_; }
+    std::size_t whole() const { return whole_; }
+
+private:
+    bool focus_repair(const NamedState& y, const acset::ACSet& subgoal, Repair& out);
+    void whole_repair(const NamedState& y, const acset::ACSet& subgoal, Repair& out);
+
+    plan::DomainPtr target_;
+    RepairOptions options_;
+    std::size_t focused_ = 0, whole_ = 0;
+};
 
 } // namespace catplan::transfer

@@ -423,7 +423,10 @@ private:
         const auto& own = *options_.target_actions;
         ACSet subgoal = migrate::migrate(f_, x_->state());
         rename_parts(subgoal, renaming_);
-        auto repair = repair_step(own.domain, y_->state(), subgoal, options_.repair);
+        if (!repairer_) {
+            repairer_.emplace(own.domain, options_.repair);
+        }
+        auto repair = repairer_->repair(*y_, subgoal);
         if (!repair.found) {
             return fail_at(i, fmt::format("{}; repair: {}",
                                           c == nullptr ? "no target action corresponds"
@@ -431,12 +434,10 @@ private:
                                                          "match in the target",
                                           repair.why));
         }
-        for (const auto& step : repair.steps) {
-            const auto* rule = own.domain->find_rule(step.action);
-            auto mt = plan::resolve_step(*rule, y_->state(), step);
-            CATPLAN_ASSERT(mt, "a repair's step applies");
-            auto applied =
-                y_->apply(*rule, *mt, [&](ObId ob, Part) { return created_name(ob, i); });
+        for (std::size_t k = 0; k < repair.steps.size(); ++k) {
+            const auto* rule = own.domain->find_rule(repair.steps[k].action);
+            auto applied = y_->apply(*rule, repair.matches[k],
+                                     [&](ObId ob, Part) { return created_name(ob, i); });
             CATPLAN_ASSERT(applied, "a repair's step applies");
         }
         if (comparing()) {
@@ -519,6 +520,7 @@ private:
     Renaming renaming_;
     std::optional<NamedState> x_, y_;
     std::optional<DivergenceCheck> check_;
+    std::optional<Repairer> repairer_;
     std::map<std::string, ActionPair, std::less<>> actions_;
 };
 
