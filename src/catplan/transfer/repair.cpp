@@ -105,6 +105,24 @@ Repair Repairer::repair(const NamedState& y, const ACSet& subgoal) {
     return out;
 }
 
+// A focused problem's goal is reached by names (a focus may be too small to tell its parts apart
+// otherwise): its ground task, compiled for it, is searched with the goal written by names; where
+// the grounded search does not apply, the planner's own search (any monic morphism), which the
+// replay on the whole state then checks by names.
+plan::SearchResult Repairer::search_by_names(const plan::ProblemPtr& p) const {
+    if (options_.search.ground) {
+        auto task = plan::ground::ReusableTask::compile(p, options_.search);
+        if (task) {
+            auto r = task->search(p->initial, p->goal, options_.search);
+            if (r) {
+                r->stats.ground_seconds += task->compile_seconds();
+                return std::move(*r);
+            }
+        }
+    }
+    return plan::find_plan(*p, options_.search);
+}
+
 bool Repairer::focus_repair(const NamedState& y, const ACSet& subgoal, Repair& out) {
     auto focus = Focus::of(y, subgoal);
     if (!focus) {
@@ -120,15 +138,15 @@ bool Repairer::focus_repair(const NamedState& y, const ACSet& subgoal, Repair& o
             continue;
         }
         searched = fp.parts;
-        plan::Problem p;
-        p.name = "repair";
-        p.domain = target_;
-        p.initial = std::make_shared<const ACSet>(std::move(fp.initial));
-        p.goal = std::make_shared<const ACSet>(std::move(fp.goal));
-        auto r = plan::find_plan(p, options_.search);
+        auto p = std::make_shared<plan::Problem>();
+        p->name = "repair";
+        p->domain = target_;
+        p->initial = std::make_shared<const ACSet>(std::move(fp.initial));
+        p->goal = std::make_shared<const ACSet>(std::move(fp.goal));
+        auto r = search_by_names(p);
         add_stats(out.stats, r.stats);
         if (r.status != plan::SearchStatus::Solved ||
-            !binds_initial_parts(*target_, *p.initial, r.plan->steps)) {
+            !binds_initial_parts(*target_, *p->initial, r.plan->steps)) {
             continue;
         }
         auto matches = replay(*target_, y, r.plan->steps, subgoal, true);
@@ -144,13 +162,42 @@ bool Repairer::focus_repair(const NamedState& y, const ACSet& subgoal, Repair& o
     return false;
 }
 
+// The whole state: the target's ground task compiled once per transfer and searched from each
+// state (plan/ground/reuse.hpp), else a search of the repair's own problem.
 void Repairer::whole_repair(const NamedState& y, const ACSet& subgoal, Repair& out) {
-    plan::Problem p;
-    p.name = "repair";
-    p.domain = target_;
-    p.initial = std::make_shared<const ACSet>(y.state());
-    p.goal = std::make_shared<const ACSet>(subgoal);
-    auto r = plan::find_plan(p, options_.search);
+    auto initial = std::make_shared<const ACSet>(y.state());
+    auto goal = std::make_shared<const ACSet>(subgoal);
+    plan::SearchResult r;
+    bool searched = false;
+    if (options_.search.ground && !task_ && why_no_task_.empty()) {
+        auto p = std::make_shared<plan::Problem>();
+        p->name = "repair";
+        p->domain = target_;
+        p->initial = initial;
+        p->goal = goal;
+        auto task = plan::ground::ReusableTask::compile(p, options_.search);
+        if (task) {
+            task_.emplace(std::move(*task));
+        } else {
+            why_no_task_ = task.error();
+        }
+    }
+    if (task_) {
+        auto reused = task_->search(initial, goal, options_.search);
+        // Unsolvable by names is not unsolvable: the repair's own problem is searched then.
+        if (reused && !(reused->status == plan::SearchStatus::Unsolvable)) {
+            r = std::move(*reused);
+            searched = true;
+        }
+    }
+    if (!searched) {
+        plan::Problem p;
+        p.name = "repair";
+        p.domain = target_;
+        p.initial = initial;
+        p.goal = goal;
+        r = plan::find_plan(p, options_.search);
+    }
     add_stats(out.stats, r.stats);
     if (r.status != plan::SearchStatus::Solved) {
         out.why = r.status == plan::SearchStatus::Unsolvable

@@ -9,8 +9,10 @@
 //
 // A repair costs what the step touches, not the size of the state: the local plan is searched
 // first on a focus of Y_{i-1} (focus.hpp: the parts near what the subgoal changes, radius 1, then
-// 2, then 4), and only when no focus gives one on the whole state. Each search is plan::find_plan
-// (greedy best-first with h_FF by default, within node and time limits). A plan found on a focus
+// 2, then 4), and only when no focus gives one on the whole state, where the target's ground task
+// is compiled once per transfer and searched from each state with a new goal
+// (plan/ground/reuse.hpp). Each search is the planner's (greedy best-first with h_FF by default,
+// within node and time limits). A plan found on a focus
 // is replayed on the whole Y_{i-1} as DPO steps and the whole subgoal is checked to embed in the
 // result before it is used; one that fails (a negative condition or a dangling part the focus
 // does not see) is set aside and the next focus tried. An empty plan is tried first.
@@ -18,10 +20,12 @@
 #include "catplan/acset/acset.hpp"
 #include "catplan/hom/morphism.hpp"
 #include "catplan/plan/domain.hpp"
+#include "catplan/plan/ground/reuse.hpp"
 #include "catplan/plan/search.hpp"
 #include "catplan/transfer/named_state.hpp"
 
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -70,10 +74,14 @@ public:
 private:
     bool focus_repair(const NamedState& y, const acset::ACSet& subgoal, Repair& out);
     void whole_repair(const NamedState& y, const acset::ACSet& subgoal, Repair& out);
+    plan::SearchResult search_by_names(const plan::ProblemPtr& p) const;
 
     plan::DomainPtr target_;
     RepairOptions options_;
     std::size_t focused_ = 0, whole_ = 0;
+    /// The target's ground task, compiled at the first repair on the whole state.
+    std::optional<plan::ground::ReusableTask> task_;
+    std::string why_no_task_; ///< why it could not be compiled (then each repair compiles its own)
 };
 
 } // namespace catplan::transfer

@@ -450,6 +450,7 @@ private:
         st.kind = StepTransfer::Kind::Repaired;
         st.target_steps = std::move(repair.steps);
         st.repair_stats = repair.stats;
+        st.repair_focus = repair.focus_parts;
         return true;
     }
 

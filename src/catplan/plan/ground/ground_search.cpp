@@ -202,11 +202,17 @@ GroundOutcome ground_search(const ProblemPtr& problem, const SearchOptions& opti
         fill_stats(out.result, budget);
         return out;
     }
+    search_task(*task, options, budget, out);
+    return out;
+}
+
+void search_task(const Task& task, const SearchOptions& options, Budget& budget,
+                 GroundOutcome& out) {
     out.compiled = true;
     auto& r = out.result;
-    r.stats.variables = task->vars.size();
-    r.stats.actions = task->actions.size();
-    Runner runner(*task, options, budget, r);
+    r.stats.variables = task.vars.size();
+    r.stats.actions = task.actions.size();
+    Runner runner(task, options, budget, r);
     try {
         r.status = runner.run();
     } catch (const LimitReached& stop) {
@@ -221,17 +227,16 @@ GroundOutcome ground_search(const ProblemPtr& problem, const SearchOptions& opti
         r.optimal = false;
     }
     if (r.status == SearchStatus::Solved) {
-        auto plan = to_dpo_plan(*task, runner.best());
+        auto plan = to_dpo_plan(task, runner.best());
         if (!plan) {
             out.rejected = plan.error();
-        } else if (auto v = validate_plan(*problem, *plan); !v.valid) {
+        } else if (auto v = validate_plan(*task.problem, *plan); !v.valid) {
             out.rejected = v.reason;
         } else {
             r.plan = std::move(*plan);
         }
     }
     fill_stats(r, budget);
-    return out;
 }
 
 } // namespace catplan::plan::ground
