@@ -68,6 +68,21 @@ ACSet induced(const ACSet& x, const std::vector<std::vector<char>>& keep) {
 
 bool embeds_by_names(const NamedState& x, const ACSet& goal) {
     const auto& s = goal.schema();
+    bool variables = false;
+    for (std::uint32_t t = 0; t < s.num_attr_types(); ++t) {
+        variables = variables || goal.num_vars(AttrTypeId(t)) > 0;
+    }
+    if (!variables) {
+        // Part by part (the seeds of a focus are exactly what differs by names), unless two facts
+        // of the goal found the same fact of x.
+        auto f = Focus::of(x, goal);
+        if (f && !f->shared_fact()) {
+            return f->seeds() == 0;
+        }
+        if (!f) {
+            return false;
+        }
+    }
     hom::HomSearchOptions opt;
     opt.monic_all = true;
     opt.max_results = 1;
@@ -96,9 +111,6 @@ Result<Focus> Focus::of(const NamedState& y, const ACSet& subgoal) {
         return fail(*why);
     }
     f.find_seeds();
-    if (f.seeds_.empty()) {
-        return fail("the subgoal differs from the target state in nothing the names show");
-    }
     return f;
 }
 
@@ -162,7 +174,11 @@ void Focus::find_seeds() {
                     seed(ob, q);
                 }
             } else {
-                differs = !fact_present(ob, p);
+                Part q = fact_in_y(ob, p);
+                differs = q == kNoPart;
+                if (!differs && seeded_[o][q]++) {
+                    shared_fact_ = true; // two facts of the subgoal are one fact of Y
+                }
             }
             if (!differs) {
                 continue;
@@ -178,9 +194,9 @@ void Focus::find_seeds() {
     }
 }
 
-// Whether Y has a part of ob (nothing points into ob) with the hom values of the subgoal's part p
-// (by namesakes) and its concrete attribute values.
-bool Focus::fact_present(ObId ob, Part p) const {
+// A part of Y of ob (nothing points into ob) with the hom values of the subgoal's part p (by
+// namesakes) and its concrete attribute values, or kNoPart.
+Part Focus::fact_in_y(ObId ob, Part p) const {
     const auto& s = y_->schema();
     auto homs = s.homs_from(ob);
     auto same = [&](Part q) {
@@ -204,17 +220,17 @@ bool Focus::fact_present(ObId ob, Part p) const {
         }
         for (Part q : y_->incident(f, namesake_[s.hom(f).codom.index()][t])) {
             if (same(q)) {
-                return true;
+                return q;
             }
         }
-        return false;
+        return kNoPart;
     }
     for (Part q = 0; q < y_->num_parts(ob); ++q) {
         if (same(q)) {
-            return true;
+            return q;
         }
     }
-    return false;
+    return kNoPart;
 }
 
 FocusedProblem Focus::problem(std::size_t radius) const {

@@ -45,9 +45,14 @@ struct FocusedProblem {
 
 class Focus {
 public:
-    /// The parts of y that differ from subgoal, or why the subgoal cannot be compared with y by
-    /// names (a part without a name or without a namesake in y, nothing found that differs).
+    /// The parts of y that differ from subgoal (none: y holds the subgoal by names, unless
+    /// shared_fact()), or why the subgoal cannot be compared with y by names (a part without a
+    /// name or without a namesake in y).
     static Result<Focus> of(const NamedState& y, const acset::ACSet& subgoal);
+
+    /// Whether two facts of the subgoal are the same fact of y (so that "no seeds" does not mean
+    /// that the subgoal embeds monically).
+    bool shared_fact() const { return shared_fact_; }
 
     /// The problem on the parts of Y within `radius` steps of a seed.
     FocusedProblem problem(std::size_t radius) const;
@@ -60,7 +65,7 @@ private:
 
     std::optional<std::string> match_names(const NamedState& y);
     void find_seeds();
-    bool fact_present(ObId ob, Part p) const;
+    Part fact_in_y(ObId ob, Part p) const;
     void seed(ObId ob, Part q);
     void close(std::vector<std::vector<char>>& keep) const;
     FocusedProblem make_problem(std::vector<std::vector<char>> keep) const;
@@ -72,7 +77,9 @@ private:
     /// Per object that homs point into, per part of Y: the subgoal part it is the namesake of.
     std::vector<std::vector<Part>> goal_part_;
     std::vector<std::pair<ObId, Part>> seeds_; // parts of Y
+    /// Per object, per part of Y: seeded (pointed objects), or found by a fact of the subgoal.
     std::vector<std::vector<char>> seeded_;
+    bool shared_fact_ = false;
 };
 
 } // namespace catplan::transfer

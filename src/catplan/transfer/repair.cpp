@@ -25,6 +25,28 @@ void add_stats(plan::SearchStats& into, const plan::SearchStats& s) {
     into.plans += s.plans;
 }
 
+// The match of a step in x: its arguments bound to the parts of those names (through the index),
+// completed uniquely; plan::resolve_step, which explains a failure, otherwise.
+Result<ACSetMorphism> bound_match(const rewrite::Rule& rule, const NamedState& x,
+                                  const plan::Step& step) {
+    rewrite::MatchOptions opt;
+    bool all_bound = step.args.size() == rule.parameters.size();
+    for (std::size_t i = 0; all_bound && i < step.args.size(); ++i) {
+        const auto& param = rule.parameters[i];
+        Part p = x.find(param.ob, step.args[i]);
+        all_bound = p != kNoPart;
+        opt.initial.push_back({param.ob, param.part, p});
+    }
+    if (all_bound) {
+        opt.max_results = 2;
+        auto matches = rewrite::find_matches(rule, x.state(), opt);
+        if (matches.size() == 1) {
+            return std::move(matches[0]);
+        }
+    }
+    return plan::resolve_step(rule, x.state(), step);
+}
+
 // Whether goal embeds monically in x (any morphism; no reason is looked for when none does).
 bool embeds(const ACSet& goal, const ACSet& x) {
     hom::HomSearchOptions opt;
@@ -33,11 +55,13 @@ bool embeds(const ACSet& goal, const ACSet& x) {
     return hom::is_homomorphic(goal, x, opt);
 }
 
-// The steps replayed as DPO steps on a copy of y, and the subgoal checked to embed in the result
-// (by names when `by_names`): each step's match, or why the steps do not reach the subgoal.
+// The steps replayed as DPO steps on a copy of y, each match bound by names (through the index
+// of names), and the subgoal checked to embed in the result, by names, or (unless `by_names`)
+// by any monic morphism: each step's match, or why the steps do not reach the subgoal. `named`
+// says which embedding was found.
 Result<std::vector<ACSetMorphism>> replay(const plan::Domain& target, const NamedState& y,
                                           const std::vector<plan::Step>& steps,
-                                          const ACSet& subgoal, bool by_names) {
+                                          const ACSet& subgoal, bool by_names, bool& named) {
     NamedState z = y;
     std::vector<ACSetMorphism> matches;
     for (const auto& step : steps) {
@@ -45,7 +69,7 @@ Result<std::vector<ACSetMorphism>> replay(const plan::Domain& target, const Name
         if (rule == nullptr) {
             return fail(fmt::format("no action {} in the target", step.action));
         }
-        auto m = plan::resolve_step(*rule, z.state(), step);
+        auto m = bound_match(*rule, z, step);
         if (!m) {
             return fail(m.error());
         }
@@ -56,7 +80,8 @@ Result<std::vector<ACSetMorphism>> replay(const plan::Domain& target, const Name
         }
         matches.push_back(std::move(*m));
     }
-    if (by_names ? !embeds_by_names(z, subgoal) : !embeds(subgoal, z.state())) {
+    named = embeds_by_names(z, subgoal);
+    if (!named && (by_names || !embeds(subgoal, z.state()))) {
         return fail("the subgoal does not embed in the state the steps reach");
     }
     return matches;
@@ -90,6 +115,7 @@ Repair Repairer::repair(const NamedState& y, const ACSet& subgoal) {
     Repair out;
     if (embeds_by_names(y, subgoal)) {
         out.found = true;
+        out.by_names = true;
         return out;
     }
     if (focus_repair(y, subgoal, out)) {
@@ -125,7 +151,7 @@ plan::SearchResult Repairer::search_by_names(const plan::ProblemPtr& p) const {
 
 bool Repairer::focus_repair(const NamedState& y, const ACSet& subgoal, Repair& out) {
     auto focus = Focus::of(y, subgoal);
-    if (!focus) {
+    if (!focus || focus->seeds() == 0) {
         return false;
     }
     std::size_t searched = 0; // the parts of the last focus searched (a larger radius adds some)
@@ -149,7 +175,8 @@ bool Repairer::focus_repair(const NamedState& y, const ACSet& subgoal, Repair& o
             !binds_initial_parts(*target_, *p->initial, r.plan->steps)) {
             continue;
         }
-        auto matches = replay(*target_, y, r.plan->steps, subgoal, true);
+        bool named = false;
+        auto matches = replay(*target_, y, r.plan->steps, subgoal, true, named);
         if (!matches) {
             continue;
         }
@@ -157,6 +184,7 @@ bool Repairer::focus_repair(const NamedState& y, const ACSet& subgoal, Repair& o
         out.steps = std::move(r.plan->steps);
         out.matches = std::move(*matches);
         out.focus_parts = fp.parts;
+        out.by_names = true;
         return true;
     }
     return false;
@@ -206,7 +234,7 @@ void Repairer::whole_repair(const NamedState& y, const ACSet& subgoal, Repair& o
                                     plan::to_string(r.status), out.stats.expanded);
         return;
     }
-    auto matches = replay(*target_, y, r.plan->steps, subgoal, false);
+    auto matches = replay(*target_, y, r.plan->steps, subgoal, false, out.by_names);
     CATPLAN_ASSERT(matches, "a plan the planner validated replays on its initial state");
     out.found = true;
     out.steps = std::move(r.plan->steps);

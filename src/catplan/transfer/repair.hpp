@@ -56,6 +56,9 @@ struct Repair {
     plan::SearchStats stats;
     /// When found on a focus: how many parts of y it kept (focus.hpp); 0 on the whole state.
     std::size_t focus_parts = 0;
+    /// The subgoal embeds in the state the steps reach sending each part that homs point into to
+    /// its namesake (else by another monic morphism).
+    bool by_names = false;
     std::string why; ///< when not found: "the subgoal is unreachable", "time limit reached"
 };
 

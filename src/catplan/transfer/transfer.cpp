@@ -442,7 +442,7 @@ private:
         }
         if (comparing()) {
             // The repair reaches a state that holds Δ_F(X_i); whether it is Δ_F(X_i) is checked.
-            if (auto d = check_->compare(i, *x_, *y_)) {
+            if (auto d = check_->compare_repaired(i, subgoal, *y_, repair.by_names)) {
                 d->where = where(i);
                 out_.verdict.divergences.push_back(std::move(*d));
             }
