@@ -163,9 +163,8 @@ void Focus::find_seeds() {
                 Part q = namesake_[o][p];
                 for (HomId f : s.homs_from(ob)) {
                     Part t = goal_->subpart(f, p);
-                    differs = differs ||
-                              (t != kNoPart &&
-                               namesake_[s.hom(f).codom.index()][t] != y_->subpart(f, q));
+                    differs = differs || (t != kNoPart && namesake_[s.hom(f).codom.index()][t] !=
+                                                              y_->subpart(f, q));
                 }
                 for (AttrId a : s.attrs_from(ob)) {
                     differs = differs || !value_agrees(goal_->subpart(a, p), y_->subpart(a, q));

@@ -119,7 +119,6 @@ Repair Repairer::repair(const NamedState& y, const ACSet& subgoal) {
         return out;
     }
     if (focus_repair(y, subgoal, out)) {
-        ++focused_;
         return out;
     }
     if (embeds(subgoal, y.state())) {
@@ -127,7 +126,6 @@ Repair Repairer::repair(const NamedState& y, const ACSet& subgoal) {
         return out;
     }
     whole_repair(y, subgoal, out);
-    whole_ += out.found ? 1 : 0;
     return out;
 }
 

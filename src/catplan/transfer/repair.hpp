@@ -7,15 +7,18 @@
 // none when Y_{i-1} already holds what Δ_F(X_i) says (the 4-operator `pick-up` seen through a map
 // that forgets the gripper).
 //
-// A repair costs what the step touches, not the size of the state: the local plan is searched
-// first on a focus of Y_{i-1} (focus.hpp: the parts near what the subgoal changes, radius 1, then
-// 2, then 4), and only when no focus gives one on the whole state, where the target's ground task
-// is compiled once per transfer and searched from each state with a new goal
-// (plan/ground/reuse.hpp). Each search is the planner's (greedy best-first with h_FF by default,
-// within node and time limits). A plan found on a focus
-// is replayed on the whole Y_{i-1} as DPO steps and the whole subgoal is checked to embed in the
-// result before it is used; one that fails (a negative condition or a dangling part the focus
-// does not see) is set aside and the next focus tried. An empty plan is tried first.
+// No step is needed when Y_{i-1} already holds the subgoal by names (focus.hpp: each part that
+// homs point into is its namesake, each fact is found by its arguments). Otherwise a repair costs
+// what the step touches, not the size of the state: the local plan is searched first on a focus
+// of Y_{i-1} (the parts near what the subgoal changes, radius 1, then 2, then 4), its goal reached
+// by names; a plan found there is replayed on the whole Y_{i-1} as DPO steps and the whole subgoal
+// is checked to hold by names in the result before it is used (one that fails, for a negative
+// condition or a dangling part the focus does not see, is set aside and the next focus tried).
+// Only when no focus gives a plan, and the subgoal does not embed in Y_{i-1} by another monic
+// morphism either, is the whole state searched: the target's ground task is compiled once per
+// transfer and searched from each state with its subgoal (plan/ground/reuse.hpp), else the
+// repair's own problem. Each search is the planner's (greedy best-first with h_FF by default,
+// within node and time limits).
 
 #include "catplan/acset/acset.hpp"
 #include "catplan/hom/morphism.hpp"
@@ -70,10 +73,6 @@ public:
     /// A plan in the target domain from y to a state into which subgoal embeds monically.
     Repair repair(const NamedState& y, const acset::ACSet& subgoal);
 
-    /// How many repairs were found on a focus and how many on the whole state.
-    std::size_t focused() const { return focused_; }
-    std::size_t whole() const { return whole_; }
-
 private:
     bool focus_repair(const NamedState& y, const acset::ACSet& subgoal, Repair& out);
     void whole_repair(const NamedState& y, const acset::ACSet& subgoal, Repair& out);
@@ -81,7 +80,6 @@ private:
 
     plan::DomainPtr target_;
     RepairOptions options_;
-    std::size_t focused_ = 0, whole_ = 0;
     /// The target's ground task, compiled at the first repair on the whole state.
     std::optional<plan::ground::ReusableTask> task_;
     std::string why_no_task_; ///< why it could not be compiled (then each repair compiles its own)

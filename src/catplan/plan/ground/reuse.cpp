@@ -53,7 +53,8 @@ Result<ReusableTask> ReusableTask::compile(const ProblemPtr& problem, const Sear
         }
         out.task_ = std::make_unique<Task>(std::move(*task));
     } catch (const LimitReached& stop) {
-        return fail(fmt::format("compiling the ground task reached the {}", to_string(stop.status)));
+        return fail(
+            fmt::format("compiling the ground task reached the {}", to_string(stop.status)));
     }
     out.compile_seconds_ = budget.elapsed();
     const Task& t = *out.task_;
@@ -197,9 +198,8 @@ std::optional<std::string> ReusableTask::write_initial(const ACSet& x) {
 
 // The object of each part of ob (not an atom object): its entity, by name (or by number when the
 // names agree place by place), else the next slot.
-std::optional<std::string> ReusableTask::place_parts(const ACSet& x,
-                                                     std::vector<ObjectId>& object_of,
-                                                     ObId ob) const {
+std::optional<std::string>
+ReusableTask::place_parts(const ACSet& x, std::vector<ObjectId>& object_of, ObId ob) const {
     const Task& t = *task_;
     const auto& ids = t.objects_of[ob.index()];
     const auto& s = x.schema();
@@ -262,8 +262,8 @@ ReusableTask::write_cells(const ACSet& x, ObId ob, Part p, ObjectId o,
         const Cell& c = t.homs[o][i];
         std::uint32_t v = c.var == kNone ? kNone : find_target(t.vars[c.var], target);
         if (c.var == kNone ? c.target != target : v == kNone) {
-            return fmt::format("{}({}) has a value the task never reaches",
-                               s.hom(homs[i]).name, x.part_label(ob, p));
+            return fmt::format("{}({}) has a value the task never reaches", s.hom(homs[i]).name,
+                               x.part_label(ob, p));
         }
         if (c.var != kNone) {
             values[c.var] = v;
@@ -275,8 +275,8 @@ ReusableTask::write_cells(const ACSet& x, ObId ob, Part p, ObjectId o,
         const Cell& c = t.attrs[o][i];
         std::uint32_t v = c.var == kNone ? kNone : find_value(t.vars[c.var], value);
         if (c.var == kNone ? c.value != value : v == kNone) {
-            return fmt::format("{}({}) has a value the task never reaches",
-                               s.attr(attrs[i]).name, x.part_label(ob, p));
+            return fmt::format("{}({}) has a value the task never reaches", s.attr(attrs[i]).name,
+                               x.part_label(ob, p));
         }
         if (c.var != kNone) {
             values[c.var] = v;

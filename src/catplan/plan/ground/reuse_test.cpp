@@ -1,6 +1,5 @@
-#include "catplan/plan/ground/reuse.hpp"
-
 #include "catplan/plan/detail/test_domains.hpp"
+#include "catplan/plan/ground/reuse.hpp"
 #include "catplan/plan/validate.hpp"
 #include "catplan/rewrite/dpo.hpp"
 
@@ -31,10 +30,9 @@ ACSet walk(const Domain& d, ACSet x, int steps, std::mt19937_64& rng) {
         std::vector<std::pair<const Rule*, ACSetMorphism>> moves;
         for (const auto& rule : d.rules) {
             for (auto& m : rewrite::find_matches(*rule, x)) {
-                bool named = std::all_of(rule->parameters.begin(), rule->parameters.end(),
-                                         [&](const auto& p) {
-                                             return !x.part_name(p.ob, m(p.ob, p.part)).empty();
-                                         });
+                bool named = std::all_of(
+                    rule->parameters.begin(), rule->parameters.end(),
+                    [&](const auto& p) { return !x.part_name(p.ob, m(p.ob, p.part)).empty(); });
                 if (named) {
                     moves.emplace_back(rule.get(), std::move(m));
                 }
