@@ -133,18 +133,19 @@ Repair Repairer::repair(const NamedState& y, const ACSet& subgoal) {
 // otherwise): its ground task, compiled for it, is searched with the goal written by names; where
 // the grounded search does not apply, the planner's own search (any monic morphism), which the
 // replay on the whole state then checks by names.
-plan::SearchResult Repairer::search_by_names(const plan::ProblemPtr& p) const {
-    if (options_.search.ground) {
-        auto task = plan::ground::ReusableTask::compile(p, options_.search);
+plan::SearchResult Repairer::search_by_names(const plan::ProblemPtr& p,
+                                             const plan::SearchOptions& options) const {
+    if (options.ground) {
+        auto task = plan::ground::ReusableTask::compile(p, options);
         if (task) {
-            auto r = task->search(p->initial, p->goal, options_.search);
+            auto r = task->search(p->initial, p->goal, options);
             if (r) {
                 r->stats.ground_seconds += task->compile_seconds();
                 return std::move(*r);
             }
         }
     }
-    return plan::find_plan(*p, options_.search);
+    return plan::find_plan(*p, options);
 }
 
 bool Repairer::focus_repair(const NamedState& y, const ACSet& subgoal, Repair& out) {
@@ -153,6 +154,10 @@ bool Repairer::focus_repair(const NamedState& y, const ACSet& subgoal, Repair& o
         return false;
     }
     std::size_t searched = 0; // the parts of the last focus searched (a larger radius adds some)
+    plan::SearchOptions options = options_.search;
+    if (options.max_nodes == 0 || options.max_nodes > options_.focus_max_nodes) {
+        options.max_nodes = options_.focus_max_nodes;
+    }
     for (std::size_t radius : options_.radii) {
         auto fp = focus->problem(radius);
         if (fp.whole) {
@@ -167,7 +172,7 @@ bool Repairer::focus_repair(const NamedState& y, const ACSet& subgoal, Repair& o
         p->domain = target_;
         p->initial = std::make_shared<const ACSet>(std::move(fp.initial));
         p->goal = std::make_shared<const ACSet>(std::move(fp.goal));
-        auto r = search_by_names(p);
+        auto r = search_by_names(p, options);
         add_stats(out.stats, r.stats);
         if (r.status != plan::SearchStatus::Solved ||
             !binds_initial_parts(*target_, *p->initial, r.plan->steps)) {

@@ -28,6 +28,7 @@
 #include "catplan/transfer/named_state.hpp"
 
 #include <cstddef>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -47,6 +48,9 @@ struct RepairOptions {
     /// The radii of the focuses searched before the whole state, in order (empty: the whole
     /// state only).
     std::vector<std::size_t> radii = {1, 2, 4};
+    /// At most this many expansions on a focus (a focus that needs more is not local, and the
+    /// next one, or the whole state, is searched), within the search's own limit.
+    std::uint64_t focus_max_nodes = 10000;
 };
 
 /// A repair: the target steps found, or why none were.
@@ -76,7 +80,8 @@ public:
 private:
     bool focus_repair(const NamedState& y, const acset::ACSet& subgoal, Repair& out);
     void whole_repair(const NamedState& y, const acset::ACSet& subgoal, Repair& out);
-    plan::SearchResult search_by_names(const plan::ProblemPtr& p) const;
+    plan::SearchResult search_by_names(const plan::ProblemPtr& p,
+                                       const plan::SearchOptions& options) const;
 
     plan::DomainPtr target_;
     RepairOptions options_;
