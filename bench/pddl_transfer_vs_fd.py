@@ -2,8 +2,8 @@
 """Plan transfer between PDDL domains beside replanning with Fast Downward, in one run.
 
     pddl_transfer_vs_fd.py --catplan BUILD/catplan --peers ../shared/peers --out DIR
-                           [--blocks 30,100] [--directions 4to3,3to4] [--runs 3] [--batch 32]
-                           [--limit 900]
+                           [--blocks 30,100] [--directions 4to3,3to4] [--runs 3]
+                           [--transfer-runs 9] [--batch 32] [--limit 900]
 
 For each direction and each seeded blocksworld problem of N blocks in the source domain:
   4to3: the 4-operator blocksworld (examples/pddl/blocks/blocks4.pddl) carried along
@@ -16,9 +16,11 @@ in DIR and used again when the problem is the same); `catplan transfer` carries 
 target domain, whole process, writing the target IPC plan (-o) and the target problem Δ_F(I),
 Δ_F(G) (--problem-output); Fast Downward then solves that target problem from scratch, whole
 process. VAL checks the source plan, the transferred plan and FD's target plan on their own domain
-files. Prints, per direction and size, the medians of --runs runs of transfer and of replanning
-(and FD's own search time, from its log), their ratio and the plan lengths, and the load average
-of the machine before and after.
+files. Prints, per direction and size, the medians of --transfer-runs runs of the transfer and
+of --runs runs of replanning (and FD's own search time, from its log), their ratios and the plan
+lengths, and the load average of the machine before and after. Each run is timed whole, wall and CPU (user + system of the
+process and its children): on a shared machine the wall time of a short process depends on the
+load more than its CPU time does.
 
 With --batch K (4to3 only), the same source plan K times over in one directory, transferred by one
 catplan process with --jobs 1 and --jobs 2: the throughput of batch transfer on one core and on two.
@@ -29,6 +31,7 @@ import os
 import pathlib
 import random
 import re
+import resource
 import shutil
 import statistics
 import subprocess
@@ -65,9 +68,14 @@ def blocks_problem(domain, hand, n, seed):
 
 
 def timed(cmd, limit):
+    """Wall seconds, the run, and its CPU seconds (user + system, the process and its children)."""
+    before = resource.getrusage(resource.RUSAGE_CHILDREN)
     start = time.perf_counter()
     r = subprocess.run(cmd, capture_output=True, text=True, timeout=limit + 30)
-    return time.perf_counter() - start, r
+    wall = time.perf_counter() - start
+    after = resource.getrusage(resource.RUSAGE_CHILDREN)
+    r.cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
+    return wall, r
 
 
 def steps(plan):
@@ -119,19 +127,23 @@ def one_size(a, direction, n, out):
     if splan is None:
         return None
     target_plan, target_problem, fd_plan = d / "target.plan", d / "target.pddl", d / "fd_target.plan"
-    transfer_s, replan_s, search_s = [], [], []
-    for _ in range(a.runs):
-        t, r = timed(transfer_cmd(a.catplan, map_file, map_name, problem, splan,
-                                  ["-o", str(target_plan), "--problem-output", str(target_problem)]),
-                     a.limit)
-        if r.returncode != 0:
-            print(f"{d.name}: transfer exit {r.returncode}: {r.stdout[-400:]}{r.stderr[-400:]}",
-                  file=sys.stderr)
-            return None
-        transfer_s.append(t)
-        t, r = fd(a.peers, BLOCKS / tgt_dom, target_problem, fd_plan, a.limit)
-        replan_s.append(t)
-        search_s.append(fd_search_seconds(r.stdout))
+    transfer_s, transfer_cpu, replan_s, replan_cpu, search_s = [], [], [], [], []
+    for i in range(max(a.runs, a.transfer_runs)):
+        if i < a.transfer_runs:
+            t, r = timed(transfer_cmd(a.catplan, map_file, map_name, problem, splan,
+                                      ["-o", str(target_plan), "--problem-output",
+                                       str(target_problem)]), a.limit)
+            if r.returncode != 0:
+                print(f"{d.name}: transfer exit {r.returncode}: {r.stdout[-400:]}{r.stderr[-400:]}",
+                      file=sys.stderr)
+                return None
+            transfer_s.append(t)
+            transfer_cpu.append(r.cpu)
+        if i < a.runs:
+            t, r = fd(a.peers, BLOCKS / tgt_dom, target_problem, fd_plan, a.limit)
+            replan_s.append(t)
+            replan_cpu.append(r.cpu)
+            search_s.append(fd_search_seconds(r.stdout))
     row = {
         "direction": direction,
         "n": n,
@@ -139,7 +151,9 @@ def one_size(a, direction, n, out):
         "target_steps": steps(target_plan),
         "fd_target_steps": steps(fd_plan) if fd_plan.exists() else None,
         "transfer_s": statistics.median(transfer_s),
+        "transfer_cpu": statistics.median(transfer_cpu),
         "replan_s": statistics.median(replan_s),
+        "replan_cpu": statistics.median(replan_cpu),
         "replan_search_s": statistics.median([s for s in search_s if s is not None] or [0.0]),
         "replan_solved": fd_plan.exists(),
         "val_source": val(a.peers, BLOCKS / src_dom, problem, splan),
@@ -181,6 +195,7 @@ def main():
     p.add_argument("--blocks", default="30,100")
     p.add_argument("--directions", default="4to3,3to4")
     p.add_argument("--runs", type=int, default=3)
+    p.add_argument("--transfer-runs", type=int, default=9)
     p.add_argument("--batch", type=int, default=0)
     p.add_argument("--limit", type=int, default=900)
     a = p.parse_args()
@@ -191,16 +206,17 @@ def main():
     print(f"load average (1, 5, 15 min) before: {load_before[0]:.2f} {load_before[1]:.2f} "
           f"{load_before[2]:.2f}; after: {load_after[0]:.2f} {load_after[1]:.2f} {load_after[2]:.2f}")
     print("| direction | blocks | source steps (FD) | transferred steps | FD replanned steps "
-          "| transfer s | FD replanning s (its search s) | replanning / transfer "
-          "| VAL source, transferred, replanned |")
+          "| transfer s (CPU s) | FD replanning s (CPU s; its search s) "
+          "| replanning / transfer: wall, CPU | VAL source, transferred, replanned |")
     print("|---|---|---|---|---|---|---|---|---|")
     for r in rows:
         ok = ", ".join("valid" if r[k] else "INVALID" for k in ("val_source", "val_transfer", "val_fd"))
         bound = "" if r["replan_solved"] else " (FD hit its limit: a lower bound)"
         print(f"| {r['direction']} | {r['n']} | {r['source_steps']} | {r['target_steps']} "
-              f"| {r['fd_target_steps']} | {r['transfer_s']:.3f} "
-              f"| {r['replan_s']:.3f} ({r['replan_search_s']:.3f}) "
-              f"| {r['replan_s'] / r['transfer_s']:.0f}x{bound} | {ok} |")
+              f"| {r['fd_target_steps']} | {r['transfer_s']:.3f} ({r['transfer_cpu']:.3f}) "
+              f"| {r['replan_s']:.3f} ({r['replan_cpu']:.3f}; {r['replan_search_s']:.3f}) "
+              f"| {r['replan_s'] / r['transfer_s']:.0f}x, "
+              f"{r['replan_cpu'] / max(r['transfer_cpu'], 1e-3):.0f}x{bound} | {ok} |")
     batched = [r for r in rows if "batch_jobs1_s" in r]
     if batched:
         print(f"\n| blocks | {a.batch} plans, --jobs 1 s | --jobs 2 s | speed-up |")
