@@ -1,6 +1,6 @@
 # The two commands of the README. Both install what is missing (tools/install-deps.sh) and build
 # what is needed; the CMake presets hold the build settings.
-.PHONY: all deps demo test build release bench format check-format check-layers check-sizes clean python \
+.PHONY: all deps demo test build release bench interop format check-format check-layers check-sizes clean python \
 	install
 
 JOBS ?= 2
@@ -42,6 +42,12 @@ install: deps
 	cmake --preset release >/dev/null
 	cmake --build --preset release -j $(JOBS) --target catplan catplan_cli_docs
 	cmake --install build/release --prefix $(PREFIX)
+
+# `pddl export` against Fast Downward and VAL (tools/interop.sh): not part of `test`, since the
+# peers are not part of the product; skipped, with a message, when PEERS has none.
+PEERS ?=
+interop: release
+	PEERS=$(PEERS) ./tools/interop.sh build/release/src/catplan/cli/catplan
 
 bench: deps
 	cmake --preset release >/dev/null

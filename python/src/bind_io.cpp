@@ -213,7 +213,10 @@ and written back.)doc")
     m.def(
         "export_pddl_problem",
         [](const PyProblem& p) { return value_or_raise(pddl::export_problem(*p.ptr)); },
-        py::arg("problem"), "The problem as a PDDL problem file.");
+        py::arg("problem"),
+        "The problem as a PDDL problem file. A goal that is a pattern is reached by the action "
+        "reach-goal, which only the domain exported with its problem has (catplan pddl export "
+        "--problem).");
 }
 
 } // namespace catplan::python

@@ -1,1 +1,1 @@
-pddl export examples/colorblocksworld/colorblocksworld.cp --domain Blocksworld
+pddl export tests/pddl/not_expressible.cp --domain PaintDomain

@@ -4,6 +4,7 @@
 #include "catplan/cli/commands.hpp"
 #include "catplan/cli/common.hpp"
 #include "catplan/cli/json_output.hpp"
+#include "catplan/cli/pddl_export.hpp"
 #include "catplan/cli/plan_commands.hpp"
 #include "catplan/migrate/migration.hpp"
 #include "catplan/pddl/export.hpp"
@@ -100,11 +101,11 @@ int cmd_pddl_import(const std::vector<std::string>& files, const std::string& ou
 }
 
 struct ExportArgs {
-    std::string file, domain, problem, map, output, problem_output;
+    std::string file, domain, problem, map, output, problem_output, plan, from_ipc;
 };
 
-/// The domain (and problem) carried along the map: Δ_F of every rule and state; nullopt with an
-/// error printed when the map does not fit or a rule cannot be migrated.
+/// The domain (and problem) carried along the map declared in the module; nullopt with an error
+/// printed when the map does not fit or a rule cannot be migrated.
 std::optional<std::pair<plan::DomainPtr, plan::ProblemPtr>>
 migrate_for_export(const lang::Module& m, const ExportArgs& a, const plan::DomainPtr& domain,
                    const plan::ProblemPtr& problem, std::ostream& err) {
@@ -112,32 +113,54 @@ migrate_for_export(const lang::Module& m, const ExportArgs& a, const plan::Domai
     if (decl == nullptr) {
         return std::nullopt;
     }
-    const migrate::SchemaMap& f = *decl->map;
-    if (domain->schema != f.source()) {
-        error(err, fmt::format("domain '{}' is on schema {}, but map '{}' migrates {}",
-                               domain->name, domain->schema->name(), a.map, f.source()->name()));
+    auto migrated = migrate_along(*decl->map, domain, problem);
+    if (!migrated) {
+        error(err, migrated.error());
         return std::nullopt;
     }
-    auto d = std::make_shared<plan::Domain>();
-    d->name = domain->name + "_" + f.target()->name();
-    d->schema = f.target();
-    for (const auto& rule : domain->rules) {
-        auto migrated = migrate::migrate(f, *rule);
-        if (!migrated) {
-            error(err, fmt::format("{} cannot be migrated: {}", rule->name, migrated.error()));
-            return std::nullopt;
+    return *migrated;
+}
+
+/// `pddl export --plan P`: P (a plan of the problem exported) in the export's terms, as an IPC
+/// plan; `--from-ipc F`: the export's IPC plan F as a catplan plan, validated on the problem
+/// exported (exit 1 when it is invalid there).
+int translate_plan(Session& s, const ExportArgs& a, const pddl::Exported& ex, std::ostream& out,
+                   std::ostream& err) {
+    auto f = read_input(s, a.plan.empty() ? a.from_ipc : a.plan, err);
+    if (!f) {
+        return kBadInput;
+    }
+    if (!a.plan.empty()) {
+        auto plan = plan::parse_plan(*f, s.sources, s.sink);
+        if (report(s, err) || !plan) {
+            return kBadInput;
         }
-        d->rules.push_back(std::make_shared<rewrite::Rule>(std::move(*migrated)));
+        auto ipc = pddl::to_exported_plan(ex, *plan);
+        if (!ipc) {
+            error(err, ipc.error());
+            return kNo;
+        }
+        return emit(pddl::write_ipc_plan(*ipc), a.output, out, err);
     }
-    plan::ProblemPtr p;
-    if (problem != nullptr) {
-        auto q = std::make_shared<plan::Problem>(*problem);
-        q->domain = d;
-        q->initial = std::make_shared<acset::ACSet>(migrate::migrate(f, *problem->initial));
-        q->goal = std::make_shared<acset::ACSet>(migrate::migrate(f, *problem->goal));
-        p = q;
+    auto ipc = pddl::parse_ipc_plan(*f, s.sources, s.sink);
+    if (report(s, err) || !ipc) {
+        return kBadInput;
     }
-    return std::pair{plan::DomainPtr(d), p};
+    auto plan = pddl::from_exported_plan(ex, *ipc);
+    if (!plan) {
+        error(err, plan.error());
+        return kBadInput;
+    }
+    // Checked with the matches the export expresses (replay_exported), and by catplan's
+    // validation, which may find a step of a migrated rule ambiguous.
+    auto r = pddl::replay_exported(ex, *plan);
+    auto v = plan::validate_plan(*ex.source, *plan);
+    std::string text = plan->to_string();
+    text += r ? "# valid on " + ex.source->name + " with the export's matches: goal reached\n"
+              : "# invalid on " + ex.source->name + ": " + r.error() + "\n";
+    text += v.valid ? "# catplan validate: valid\n" : "# catplan validate: " + v.reason + "\n";
+    int rc = emit(text, a.output, out, err);
+    return rc != kOk ? rc : (r ? kOk : kNo);
 }
 
 int cmd_pddl_export(const ExportArgs& a, std::ostream& out, std::ostream& err) {
@@ -179,25 +202,27 @@ int cmd_pddl_export(const ExportArgs& a, std::ostream& out, std::ostream& err) {
         }
         std::tie(domain, problem) = *migrated;
     }
-    auto dtext = pddl::export_domain(*domain);
-    if (!dtext) {
-        error(err, dtext.error());
+    if ((!a.plan.empty() || !a.from_ipc.empty()) && problem == nullptr) {
+        error(err, "--plan and --from-ipc need --problem");
+        return kBadInput;
+    }
+    auto ex = pddl::export_pddl(*domain, problem.get());
+    if (!ex) {
+        error(err, ex.error());
         return kUnsupported;
     }
-    std::string ptext;
-    if (problem != nullptr) {
-        auto p = pddl::export_problem(*problem);
-        if (!p) {
-            error(err, p.error());
-            return kUnsupported;
-        }
-        ptext = *p;
+    for (const auto& note : ex->notes) {
+        err << "catplan: note: " << note << "\n";
+    }
+    if (!a.plan.empty() || !a.from_ipc.empty()) {
+        return translate_plan(s, a, *ex, out, err);
     }
     if (!a.problem_output.empty()) {
         // Both files or neither (emit stages them together).
-        return emit({{*dtext, a.output}, {ptext, a.problem_output}}, out, err);
+        return emit({{ex->domain, a.output}, {ex->problem, a.problem_output}}, out, err);
     }
-    return emit(ptext.empty() ? *dtext : *dtext + "\n" + ptext, a.output, out, err);
+    return emit(ex->problem.empty() ? ex->domain : ex->domain + "\n" + ex->problem, a.output, out,
+                err);
 }
 
 /// " (file:line:col)" for a located step, "" otherwise.
@@ -231,6 +256,34 @@ nlohmann::json ipc_validation_json(const Session& s, const pddl::Import& im,
 }
 
 } // namespace
+
+Result<std::pair<plan::DomainPtr, plan::ProblemPtr>>
+migrate_along(const migrate::SchemaMap& f, const plan::DomainPtr& domain,
+              const plan::ProblemPtr& problem) {
+    if (domain->schema != f.source()) {
+        return fail(fmt::format("domain '{}' is on schema {}, but the map migrates {}",
+                                domain->name, domain->schema->name(), f.source()->name()));
+    }
+    auto d = std::make_shared<plan::Domain>();
+    d->name = domain->name + "_" + f.target()->name();
+    d->schema = f.target();
+    for (const auto& rule : domain->rules) {
+        auto migrated = migrate::migrate(f, *rule);
+        if (!migrated) {
+            return fail(fmt::format("{} cannot be migrated: {}", rule->name, migrated.error()));
+        }
+        d->rules.push_back(std::make_shared<rewrite::Rule>(std::move(*migrated)));
+    }
+    plan::ProblemPtr p;
+    if (problem != nullptr) {
+        auto q = std::make_shared<plan::Problem>(*problem);
+        q->domain = d;
+        q->initial = std::make_shared<acset::ACSet>(migrate::migrate(f, *problem->initial));
+        q->goal = std::make_shared<acset::ACSet>(migrate::migrate(f, *problem->goal));
+        p = q;
+    }
+    return std::pair{plan::DomainPtr(d), p};
+}
 
 bool is_pddl_input(const std::vector<std::string>& files) {
     return std::any_of(files.begin(), files.end(), [](const std::string& f) {
@@ -349,6 +402,14 @@ void add_pddl_commands(CLI::App& app, CommandTable& table) {
                     "along it");
     exp->add_option("-o,--output", ea.output, "write the domain (and problem) to this file");
     exp->add_option("--problem-output", ea.problem_output, "write the problem to this file");
+    exp->add_option("--plan", ea.plan,
+                    "a plan of the problem: print it in the export's terms (an IPC plan) instead")
+        ->excludes(exp->get_option("--problem-output"));
+    exp->add_option("--from-ipc", ea.from_ipc,
+                    "an IPC plan of the export: print it as a plan of the problem, validated on "
+                    "it (exit 1 when invalid), instead")
+        ->excludes(exp->get_option("--problem-output"))
+        ->excludes(exp->get_option("--plan"));
     table.add(exp, [](std::ostream& o, std::ostream& e) { return cmd_pddl_export(ea, o, e); });
 }
 

@@ -2,6 +2,7 @@
 
 #include "catplan/base/assert.hpp"
 #include "catplan/base/escape.hpp"
+#include "catplan/dot/detail/panel.hpp"
 #include "catplan/migrate/describe.hpp"
 
 #include <algorithm>
@@ -78,350 +79,12 @@ std::string escape_html(std::string_view s) {
 
 namespace {
 
-// Soft fills, one per object (by declaration index), so an object has the same colour in the
-// schema, in every state and in every panel of a rule.
-constexpr std::array<std::string_view, 8> kFills = {"#dbe9f6", "#fde2c8", "#d9f0d3", "#f3d9ec",
-                                                    "#fff2b3", "#e0dcf5", "#cdeeee", "#f6d5d5"};
-
-std::string_view fill(ObId x) {
-    return kFills[x.index() % kFills.size()];
-}
-
-/// Accumulates indented lines.
-class Writer {
-public:
-    void line(std::string_view text) {
-        out_.append(2 * indent_, ' ');
-        out_ += text;
-        out_ += '\n';
-    }
-
-    void open(std::string_view text) {
-        line(text);
-        ++indent_;
-    }
-
-    void close() {
-        CATPLAN_ASSERT(indent_ > 0, "unbalanced braces");
-        --indent_;
-        line("}");
-    }
-
-    std::string take() { return std::move(out_); }
-
-private:
-    std::string out_;
-    std::size_t indent_ = 0;
-};
-
-void header(Writer& w, std::string_view name, std::string_view label, const DotOptions& o,
-            bool left_to_right, bool newrank) {
-    w.open(fmt::format("digraph {} {{", dot_id(name)));
-    std::string graph = fmt::format("graph [fontname=\"{}\", fontsize=14, labelloc=t, label=\"{}\"",
-                                    escape_quoted(o.font), escape_quoted(label));
-    if (left_to_right) {
-        graph += ", rankdir=LR";
-    }
-    if (newrank) {
-        graph += ", newrank=true";
-    }
-    w.line(graph + "];");
-    w.line(fmt::format("node [fontname=\"{}\", fontsize=11];", escape_quoted(o.font)));
-    w.line(fmt::format("edge [fontname=\"{}\", fontsize=10];", escape_quoted(o.font)));
-}
-
-// ---- which objects are drawn as edges or rows ---------------------------------------------------
-
-struct Folding {
-    std::vector<bool> relation;  // by object: parts drawn as one edge
-    std::vector<bool> predicate; // by object: parts drawn as rows of their hom's target
-};
-
-/// Decides the folding of each object. `sources` are the states whose parts start map edges: a
-/// relation object with parts there stays drawn as nodes so the edges have somewhere to start.
-Folding decide_folding(const Schema& s, const DotOptions& o,
-                       const std::vector<const ACSet*>& sources) {
-    Folding f{std::vector<bool>(s.num_obs(), false), std::vector<bool>(s.num_obs(), false)};
-    for (std::uint32_t i = 0; i < s.num_obs(); ++i) {
-        ObId x(i);
-        if (!s.homs_into(x).empty()) {
-            continue; // something points at these parts: they must be nodes
-        }
-        auto homs = s.homs_from(x);
-        auto attrs = s.attrs_from(x);
-        if (o.relation_edges && homs.size() == 2 && attrs.empty()) {
-            f.relation[i] = std::none_of(sources.begin(), sources.end(),
-                                         [&](const ACSet* a) { return a->num_parts(x) > 0; });
-        } else if (o.predicate_rows && homs.size() == 1 && !attrs.empty()) {
-            f.predicate[i] = true;
-        }
-    }
-    return f;
-}
-
-// ---- panels: one state drawn inside a picture -------------------------------------------------
-
-struct Row {
-    std::string port; // empty for an attribute of the part itself
-    std::string html; // the row's text, already escaped
-    std::string_view bg;
-};
-
-/// A state drawn with node ids prefixed by `prefix` ("" for a picture of one state).
-class Panel {
-public:
-    Panel(const ACSet& x, std::string prefix, const Folding& folding, const DotOptions& o)
-        : x_(x), s_(x.schema()), prefix_(std::move(prefix)), folding_(folding), o_(o) {
-        rows_.resize(s_.num_obs());
-        for (std::uint32_t i = 0; i < s_.num_obs(); ++i) {
-            rows_[i].resize(x_.num_parts(ObId(i)));
-        }
-        for (std::uint32_t i = 0; i < s_.num_obs(); ++i) {
-            ObId ob(i);
-            // One row per attribute of the part itself: long values stay readable.
-            for (Part p = 0; p < x_.num_parts(ob); ++p) {
-                for (AttrId a : s_.attrs_from(ob)) {
-                    std::string text = attr_text(p, a);
-                    if (!text.empty()) {
-                        rows_[i][p].push_back({"", std::move(text), ""});
-                    }
-                }
-            }
-        }
-        // Predicate rows go after the part's own attributes, by object then part.
-        for (std::uint32_t i = 0; i < s_.num_obs(); ++i) {
-            ObId ob(i);
-            if (!folding_.predicate[i]) {
-                continue;
-            }
-            HomId h = s_.homs_from(ob)[0];
-            ObId target = s_.hom(h).codom;
-            for (Part q = 0; q < x_.num_parts(ob); ++q) {
-                Part t = x_.subpart(h, q);
-                if (t == kNoPart) {
-                    continue; // drawn as a node of its own
-                }
-                std::string text = attr_text(ob, q);
-                if (text.empty()) {
-                    text = escape_html(s_.ob(ob).name);
-                }
-                if (o_.predicate_part_names && !x_.part_name(ob, q).empty()) {
-                    text = fmt::format("<FONT COLOR=\"#666666\">{}:</FONT> {}",
-                                       escape_html(x_.part_name(ob, q)), text);
-                }
-                rows_[target.index()][t].push_back({port_name(ob, q), std::move(text), fill(ob)});
-            }
-        }
-    }
-
-    /// Marks parts with CSS classes (state pictures only: the parts are this panel's).
-    void set_classes(const std::vector<PartClass>* classes) { classes_ = classes; }
-
-    /// The node id of a part drawn as a node.
-    std::string node_id(ObId ob, Part p) const {
-        return prefix_ + s_.ob(ob).name + "_" + std::to_string(p + 1);
-    }
-
-    /// Where a part is drawn, as a node id and a port ("" for the whole node); nullopt for a
-    /// relation part drawn as an edge.
-    std::optional<std::pair<std::string, std::string>> place(ObId ob, Part p) const {
-        if (is_node(ob, p)) {
-            return std::pair{node_id(ob, p), std::string()};
-        }
-        if (folding_.predicate[ob.index()]) {
-            HomId h = s_.homs_from(ob)[0];
-            return std::pair{node_id(s_.hom(h).codom, x_.subpart(h, p)), port_name(ob, p)};
-        }
-        return std::nullopt;
-    }
-
-    /// Writes the clusters of this panel's nodes and the edges of its homs.
-    void write(Writer& w) const {
-        for (std::uint32_t i = 0; i < s_.num_obs(); ++i) {
-            write_cluster(w, ObId(i));
-        }
-        for (std::uint32_t i = 0; i < s_.num_homs(); ++i) {
-            HomId h(i);
-            ObId dom = s_.hom(h).dom;
-            for (Part p = 0; p < x_.num_parts(dom); ++p) {
-                Part t = x_.subpart(h, p);
-                if (t != kNoPart && is_node(dom, p)) {
-                    w.line(fmt::format("{} -> {} [label=\"{}\"];", dot_id(node_id(dom, p)),
-                                       dot_id(node_id(s_.hom(h).codom, t)),
-                                       escape_quoted(s_.hom(h).name)));
-                }
-            }
-        }
-        for (std::uint32_t i = 0; i < s_.num_obs(); ++i) {
-            if (folding_.relation[i]) {
-                write_relation_edges(w, ObId(i));
-            }
-        }
-    }
-
-    /// Whether the panel draws any node (an empty state draws a placeholder instead).
-    bool has_nodes() const {
-        for (std::uint32_t i = 0; i < s_.num_obs(); ++i) {
-            for (Part p = 0; p < x_.num_parts(ObId(i)); ++p) {
-                if (is_node(ObId(i), p)) {
-                    return true;
-                }
-            }
-        }
-        return false;
-    }
-
-    /// The first node of the panel, if any (anchors the side-by-side layout of panels).
-    std::optional<std::string> first_node() const {
-        for (std::uint32_t i = 0; i < s_.num_obs(); ++i) {
-            for (Part p = 0; p < x_.num_parts(ObId(i)); ++p) {
-                if (is_node(ObId(i), p)) {
-                    return node_id(ObId(i), p);
-                }
-            }
-        }
-        return std::nullopt;
-    }
-
-private:
-    std::string port_name(ObId ob, Part p) const {
-        return s_.ob(ob).name + "_" + std::to_string(p + 1);
-    }
-
-    /// "a = v" for one attribute of a part, escaped for HTML; "" when the cell is unset.
-    std::string attr_text(Part p, AttrId a) const {
-        const Value& v = x_.subpart(a, p);
-        if (v.is_unset()) {
-            return {};
-        }
-        return escape_html(
-            fmt::format("{} = {}", s_.attr(a).name, x_.value_label(s_.attr(a).codom, v)));
-    }
-
-    /// "a = v, b = w" for the set attributes of a part, escaped for HTML; "" when none is set.
-    std::string attr_text(ObId ob, Part p) const {
-        std::string text;
-        for (AttrId a : s_.attrs_from(ob)) {
-            std::string one = attr_text(p, a);
-            if (!one.empty()) {
-                text += (text.empty() ? "" : ", ") + one;
-            }
-        }
-        return text;
-    }
-
-    /// `, class="..."` for a marked part, else "".
-    std::string class_attr(ObId ob, Part p) const {
-        if (classes_ == nullptr) {
-            return {};
-        }
-        std::string out;
-        for (const auto& c : *classes_) {
-            if (c.ob == ob && c.part == p) {
-                out += (out.empty() ? "" : " ") + c.css_class;
-            }
-        }
-        return out.empty() ? out : fmt::format(", class=\"{}\"", escape_quoted(out));
-    }
-
-    bool is_node(ObId ob, Part p) const {
-        if (folding_.relation[ob.index()]) {
-            auto homs = s_.homs_from(ob);
-            return x_.subpart(homs[0], p) == kNoPart || x_.subpart(homs[1], p) == kNoPart;
-        }
-        if (folding_.predicate[ob.index()]) {
-            return x_.subpart(s_.homs_from(ob)[0], p) == kNoPart;
-        }
-        return true;
-    }
-
-    void write_cluster(Writer& w, ObId ob) const {
-        std::vector<Part> parts;
-        for (Part p = 0; p < x_.num_parts(ob); ++p) {
-            if (is_node(ob, p)) {
-                parts.push_back(p);
-            }
-        }
-        if (parts.empty()) {
-            return;
-        }
-        const std::string& name = s_.ob(ob).name;
-        w.open(fmt::format("subgraph {} {{", dot_id("cluster_" + prefix_ + name)));
-        w.line(fmt::format("graph [label=\"{}\", style=rounded, color=\"#999999\", "
-                           "fontcolor=\"#444444\", fontsize=11];",
-                           escape_quoted(name)));
-        w.line(
-            fmt::format("node [shape=box, style=\"rounded,filled\", fillcolor=\"{}\"];", fill(ob)));
-        for (Part p : parts) {
-            write_node(w, ob, p);
-        }
-        w.close();
-    }
-
-    void write_node(Writer& w, ObId ob, Part p) const {
-        std::string label = x_.part_label(ob, p);
-        const auto& rows = rows_[ob.index()][p];
-        if (rows.empty()) {
-            w.line(fmt::format("{} [label=\"{}\"{}];", dot_id(node_id(ob, p)), escape_quoted(label),
-                               class_attr(ob, p)));
-            return;
-        }
-        std::string html = fmt::format("<TABLE BORDER=\"1\" CELLBORDER=\"0\" CELLSPACING=\"0\" "
-                                       "CELLPADDING=\"3\" STYLE=\"rounded\" BGCOLOR=\"{}\">"
-                                       "<TR><TD><B>{}</B></TD></TR>",
-                                       fill(ob), escape_html(label));
-        for (const Row& row : rows) {
-            std::string attrs = "ALIGN=\"LEFT\"";
-            if (!row.port.empty()) {
-                attrs += fmt::format(" PORT=\"{}\"", escape_html(row.port));
-            }
-            if (!row.bg.empty()) {
-                attrs += fmt::format(" BGCOLOR=\"{}\"", row.bg);
-            }
-            html += fmt::format("<HR/><TR><TD {}>{}</TD></TR>", attrs, row.html);
-        }
-        html += "</TABLE>";
-        w.line(fmt::format("{} [shape=plain, label=<{}>{}];", dot_id(node_id(ob, p)), html,
-                           class_attr(ob, p)));
-    }
-
-    void write_relation_edges(Writer& w, ObId ob) const {
-        auto homs = s_.homs_from(ob);
-        const std::string& name = s_.ob(ob).name;
-        for (Part p = 0; p < x_.num_parts(ob); ++p) {
-            if (is_node(ob, p)) {
-                continue;
-            }
-            auto part = x_.part_name(ob, p);
-            std::string label = part.empty() ? name : fmt::format("{} {}", name, part);
-            w.line(fmt::format("{} -> {} [label=\"{}\", penwidth=1.6, color=\"#555555\"{}];",
-                               dot_id(node_id(s_.hom(homs[0]).codom, x_.subpart(homs[0], p))),
-                               dot_id(node_id(s_.hom(homs[1]).codom, x_.subpart(homs[1], p))),
-                               escape_quoted(label), class_attr(ob, p)));
-        }
-    }
-
-    const ACSet& x_;
-    const Schema& s_;
-    std::string prefix_;
-    const Folding& folding_;
-    const DotOptions& o_;
-    std::vector<std::vector<std::vector<Row>>> rows_; // by object, by part
-    const std::vector<PartClass>* classes_ = nullptr;
-};
-
-/// An edge end: a node, or a row of a node with an optional compass point ("e", "w") so that an
-/// edge between side-by-side panels leaves and enters the row from the side facing the other.
-std::string endpoint(const std::pair<std::string, std::string>& place, std::string_view compass) {
-    if (place.second.empty()) {
-        return dot_id(place.first);
-    }
-    std::string out = dot_id(place.first) + ":" + dot_id(place.second);
-    if (!compass.empty()) {
-        out += ":" + std::string(compass);
-    }
-    return out;
-}
+using detail::endpoint;
+using detail::fill;
+using detail::Folding;
+using detail::header;
+using detail::Panel;
+using detail::Writer;
 
 /// Writes a panel as a cluster titled `title` (a placeholder node keeps an empty one visible).
 void write_panel_cluster(Writer& w, const Panel& panel, std::string_view id, std::string_view title,
@@ -501,6 +164,10 @@ void check_images(const hom::ACSetMorphism& f, const ACSet& dom, const ACSet& co
 }
 
 constexpr std::string_view kMapStyle = "style=dashed, color=\"#888888\", arrowhead=vee";
+// An ontology map's edges from each target object (and attribute type) to its image: blue and
+// heavier, so that they do not read as the schemas' own dashed gray attribute edges.
+constexpr std::string_view kImageStyle =
+    "style=dashed, color=\"#1f5fbf\", penwidth=1.6, arrowhead=vee";
 
 /// Writes a schema's objects, attribute types, homs and attributes, with node ids prefixed by
 /// `prefix` (schema pictures use none; a map picture draws two schemas that may share names).
@@ -568,12 +235,13 @@ std::string schema_to_dot(const Schema& s, const DotOptions& o) {
 }
 
 std::string state_to_dot(const ACSet& x, std::string_view name, const DotOptions& o,
-                         const std::vector<PartClass>& classes) {
+                         const std::vector<PartClass>& classes,
+                         const std::vector<PartLabel>& labels) {
     Writer w;
     header(w, name, name, o, o.left_to_right, false);
-    Folding folding = decide_folding(x.schema(), o, {});
+    Folding folding = detail::decide_folding(x.schema(), o, {});
     Panel panel(x, "", folding, o);
-    panel.set_classes(&classes);
+    panel.set_marks(&classes, &labels);
     if (panel.has_nodes()) {
         panel.write(w);
     } else {
@@ -590,7 +258,7 @@ std::string rule_to_dot(const rewrite::Rule& r, const DotOptions& o) {
     if (!r.conditions.empty()) {
         sources.push_back(&r.L);
     }
-    Folding folding = decide_folding(r.L.schema(), o, sources);
+    Folding folding = detail::decide_folding(r.L.schema(), o, sources);
     Panel pre(r.L, "Pre_", folding, o), keep(r.K, "Keep_", folding, o),
         eff(r.R, "Eff_", folding, o);
 
@@ -635,7 +303,7 @@ std::string rule_to_dot(const rewrite::Rule& r, const DotOptions& o) {
 std::string morphism_to_dot(const hom::ACSetMorphism& f, const ACSet& dom, const ACSet& codom,
                             std::string_view name, const DotOptions& o) {
     check_images(f, dom, codom);
-    Folding folding = decide_folding(dom.schema(), o, {&dom});
+    Folding folding = detail::decide_folding(dom.schema(), o, {&dom});
     Panel from(dom, "dom_", folding, o), to(codom, "codom_", folding, o);
     Writer w;
     header(w, name, name, o, false, true);
@@ -776,7 +444,7 @@ std::string map_to_dot(const migrate::SchemaMap& f, std::string_view name, const
            o, /*left_to_right=*/true, /*newrank=*/true);
     write_schema_cluster(w, t, "target", "target", "T_");
     write_schema_cluster(w, s, "source", "source", "S_");
-    w.line(fmt::format("edge [{}];", kMapStyle));
+    w.line(fmt::format("edge [{}];", kImageStyle));
     for (std::uint32_t i = 0; i < t.num_obs(); ++i) {
         ObId c(i);
         std::string from = dot_id("T_" + t.ob(c).name);

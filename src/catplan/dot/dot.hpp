@@ -10,14 +10,14 @@
 //              gray edges from each Keep part to its images
 //   morphism   domain and codomain side by side, a dashed edge from each part to its image
 //   map        an ontology map F : D' -> D: the target schema D' (left) and the source schema D
-//              (right) as clusters drawn like schema pictures; a dashed edge from each target
+//              (right) as clusters drawn like schema pictures; a dashed blue edge from each target
 //              object to its image, a source object or a query box listing the query's variables
 //              (`block::Block`) and facts (`hasColor(block) == "purple"`), with dotted edges
 //              from each variable to the source object or attribute type it ranges over; dashed
-//              edges from each target attribute type to its source type or value kind; the
+//              blue edges from each target attribute type to its source type or value kind; the
 //              images of homs and attributes listed in a table under the picture
 //
-// Two readability heuristics for blocks-like domains, both on by default (DotOptions):
+// Three readability heuristics for blocks-like domains, all on by default (DotOptions):
 //   relation edges   an object with exactly two homs, no attributes and no homs into it (a binary
 //                    relation such as On(on_l, on_r)) is drawn as one edge from a part's first
 //                    target to its second, labelled "On x1", instead of a node with two edges.
@@ -28,6 +28,14 @@
 //                    (a predicate object such as IsClear(isClearDom, isClear) in the slides'
 //                    form) whose hom points at a part drawn as a node is drawn as a row
 //                    "isClear = true" of that node. Map edges attach to the row.
+//   facet rows       in a picture of one state, an object with attributes or with two or more
+//                    homs into objects that have no homs and no attributes of their own is an
+//                    entity, and those objects are its facets (Kitchenworld's BreadSliced is an
+//                    Object and a Receptacle): a facet part that exactly one entity part is, is
+//                    drawn as a row "is Object" of that part's node, and edges to the facet part
+//                    (a relation's, InReceptacle) attach to the row, so that one thing is one
+//                    node and a tower reads as one. Entity nodes are drawn outside clusters,
+//                    their object named after the part's name.
 //
 // Output is deterministic: objects, homs and attributes in declaration order, parts in part
 // order. Node ids are stable and readable: `Block_3` is part 3 (1-based) of Block; in rule and
@@ -54,6 +62,11 @@ struct DotOptions {
     bool relation_edges = true;
     /// Draw predicate objects as rows of the node they point at (see the header comment).
     bool predicate_rows = true;
+    /// Fold facet parts into the node of the entity part that is them (see the header comment).
+    bool facet_rows = true;
+    /// Objects (by name) whose parts' attribute rows are not drawn: a report says their values
+    /// once beside the picture when every part has the same ones.
+    std::vector<std::string> attributes_hidden;
     /// Prefix each folded predicate row with the predicate part's name, when it has one.
     bool predicate_part_names = false;
     /// The font of every label.
@@ -72,12 +85,21 @@ struct PartClass {
     std::string css_class;
 };
 
+/// A label given to one part of a state's picture in place of its name: how a report calls a
+/// part whose name catplan made up by a term a person can read (`isEmpty(empty)`).
+struct PartLabel {
+    ObId ob;
+    Part part = kNoPart;
+    std::string label;
+};
+
 /// A DOT digraph of a state, titled `name`, with one cluster per object that has parts; a part
-/// in `classes` carries its class on its node, or on its edge for a relation part drawn as one
-/// (a predicate folded into a row has no element of its own and is not marked).
+/// in `classes` carries its class on its node (a facet folded into a row, on its entity's node),
+/// or on its edge for a relation part drawn as one (a predicate folded into a row has no element
+/// of its own and is not marked); a part in `labels` is shown with that label.
 std::string state_to_dot(const acset::ACSet& x, std::string_view name,
-                         const DotOptions& options = {},
-                         const std::vector<PartClass>& classes = {});
+                         const DotOptions& options = {}, const std::vector<PartClass>& classes = {},
+                         const std::vector<PartLabel>& labels = {});
 
 /// A DOT digraph of a rule: clusters Pre, Keep and Eff (and one per application condition) with
 /// the maps between them as dashed edges.

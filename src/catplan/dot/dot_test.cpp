@@ -539,6 +539,90 @@ TEST(DotState, PredicateObjectsAsRows) {
     EXPECT_TRUE(contains(nodes, "IsClear_1 -> Block_2 [label=\"isClearDom\"];"));
 }
 
+// A Kitchenworld-like state: two sliced things (attributes make them things, not relations), each
+// an Object and a Receptacle, one in the other, a knife (an Object only), a gripper holding it and
+// a marker Object no thing is.
+struct Kitchen {
+    std::shared_ptr<Schema> s = std::make_shared<Schema>("Kitchen");
+    ObId object = s->add_ob("Object"), receptacle = s->add_ob("Receptacle");
+    ObId bread = s->add_ob("Bread"), knife = s->add_ob("Knife");
+    ObId in = s->add_ob("InReceptacle"), gripper = s->add_ob("Gripper");
+    HomId bread_object = s->add_hom("breadIsObject", bread, object);
+    HomId bread_receptacle = s->add_hom("breadIsReceptacle", bread, receptacle);
+    HomId knife_object = s->add_hom("knifeIsObject", knife, object);
+    HomId in_l = s->add_hom("in_l", in, object), in_r = s->add_hom("in_r", in, receptacle);
+    HomId holding = s->add_hom("isHolding", gripper, object);
+    AttrTypeId mass = s->add_attr_type("Mass", ValueKind::Float);
+    AttrId knife_mass = s->add_attr("knifeHasMass", knife, mass);
+    // With no attribute, Bread would be a binary relation drawn as an edge.
+    AttrId bread_mass = s->add_attr("breadHasMass", bread, mass);
+
+    ACSet state() const {
+        ACSet x(s);
+        for (auto name : {"a", "b", "k", "marker"}) {
+            x.add_part(object, name);
+        }
+        x.add_part(receptacle, "a");
+        x.add_part(receptacle, "b");
+        Part a = x.add_part(bread, "a"), b = x.add_part(bread, "b");
+        x.set_subpart(bread_object, a, 0);
+        x.set_subpart(bread_receptacle, a, 0);
+        x.set_subpart(bread_object, b, 1);
+        x.set_subpart(bread_receptacle, b, 1);
+        Part k = x.add_part(knife, "k");
+        x.set_subpart(knife_object, k, 2);
+        x.set_subpart(knife_mass, k, Value::real(0.5));
+        Part i = x.add_part(in, "x1");
+        x.set_subpart(in_l, i, 0); // a is in b
+        x.set_subpart(in_r, i, 1);
+        Part g = x.add_part(gripper, "gripper");
+        x.set_subpart(holding, g, 2);
+        return x;
+    }
+};
+
+TEST(DotState, FacetsAsRowsOfTheirEntity) {
+    Kitchen kt;
+    std::string dot = state_to_dot(kt.state(), "k");
+    // Each sliced thing is one node with a row per facet; the knife's attribute makes it an
+    // entity too, not a predicate row of its Object.
+    EXPECT_TRUE(contains(dot, "Bread_1 [shape=plain"));
+    EXPECT_TRUE(contains(dot, "PORT=\"Object_1\""));
+    EXPECT_TRUE(contains(dot, "PORT=\"Receptacle_2\""));
+    EXPECT_TRUE(contains(dot, "Knife_1 [shape=plain"));
+    EXPECT_TRUE(contains(dot, "knifeHasMass = 0.5"));
+    EXPECT_FALSE(contains(dot, "Object_1 ["));
+    EXPECT_FALSE(contains(dot, "subgraph cluster_Bread"));
+    // A thing in another is an edge between their rows: a tower reads as one.
+    EXPECT_TRUE(
+        contains(dot, "Bread_1:Object_1 -> Bread_2:Receptacle_2 [label=\"InReceptacle x1\""));
+    EXPECT_TRUE(contains(dot, "Gripper_1 -> Knife_1:Object_3 [label=\"isHolding\"];"));
+    EXPECT_FALSE(contains(dot, "label=\"breadIsObject\""));
+    // An Object that no thing is stays a node of its own.
+    EXPECT_TRUE(contains(dot, "Object_4 [label=\"marker\"];"));
+    DotOptions o;
+    o.facet_rows = false;
+    std::string plain = state_to_dot(kt.state(), "k", o);
+    EXPECT_TRUE(contains(plain, "Bread_1 -> Object_1 [label=\"breadIsObject\"];"));
+    EXPECT_TRUE(contains(plain, "Object_1 -> Receptacle_2 [label=\"InReceptacle x1\""));
+}
+
+TEST(DotState, MarksAndLabelsOfFacetsGoToTheirEntity) {
+    Kitchen kt;
+    std::vector<PartClass> classes = {{kt.receptacle, 1, "matched"}};
+    std::vector<PartLabel> labels = {{kt.object, 3, "isEmpty(empty)"}};
+    std::string dot = state_to_dot(kt.state(), "k", {}, classes, labels);
+    EXPECT_TRUE(contains(dot, "</TABLE>>, class=\"matched\"];")); // on Bread_2's node
+    EXPECT_TRUE(contains(dot, "Object_4 [label=\"isEmpty(empty)\"];"));
+}
+
+TEST(DotState, HiddenAttributes) {
+    Kitchen kt;
+    DotOptions o;
+    o.attributes_hidden = {"Knife"};
+    EXPECT_FALSE(contains(state_to_dot(kt.state(), "k", o), "knifeHasMass"));
+}
+
 TEST(DotState, EmptyState) {
     Blocks b;
     std::string dot = state_to_dot(ACSet(b.s), "nothing");

@@ -1,186 +1,17 @@
+// The domain side of the export: rules as actions (export.hpp says what each construct becomes).
+
 #include "catplan/pddl/export.hpp"
+
+#include "catplan/pddl/detail/export_writer.hpp"
 
 #include <algorithm>
 #include <fmt/format.h>
 #include <map>
 #include <set>
 
-namespace catplan::pddl {
+namespace catplan::pddl::detail {
 
 namespace {
-
-using acset::ACSet;
-using schema::Schema;
-
-/// How the schema reads as PDDL (export.hpp).
-struct Reading {
-    std::vector<bool> entity;                 // by object
-    std::vector<std::optional<HomId>> parent; // the is-a hom of an entity type
-    std::vector<std::vector<HomId>> children; // is-a homs into an entity type
-    std::vector<AttrId> bool_attrs, name_attrs;
-    std::vector<std::string> dropped; // attributes left out
-    std::vector<ObId> predicates;
-};
-
-Result<Reading> read_schema(const Schema& s) {
-    Reading r;
-    r.entity.assign(s.num_obs(), false);
-    r.parent.resize(s.num_obs());
-    r.children.resize(s.num_obs());
-    for (std::uint32_t f = 0; f < s.num_homs(); ++f) {
-        r.entity[s.hom(HomId(f)).codom.index()] = true;
-    }
-    for (std::uint32_t a = 0; a < s.num_attrs(); ++a) {
-        r.entity[s.attr(AttrId(a)).dom.index()] = true;
-    }
-    for (std::uint32_t f = 0; f < s.num_homs(); ++f) {
-        const auto& h = s.hom(HomId(f));
-        if (!r.entity[h.dom.index()]) {
-            continue;
-        }
-        if (r.parent[h.dom.index()]) {
-            return fail(fmt::format("not expressible: '{}' has two homs to entity types ({} and "
-                                    "{}); PDDL types form a tree",
-                                    s.ob(h.dom).name, s.hom(*r.parent[h.dom.index()]).name,
-                                    h.name));
-        }
-        r.parent[h.dom.index()] = HomId(f);
-        r.children[h.codom.index()].push_back(HomId(f));
-    }
-    for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
-        if (!r.entity[o]) {
-            r.predicates.push_back(ObId(o));
-        }
-    }
-    for (std::uint32_t a = 0; a < s.num_attrs(); ++a) {
-        const auto& info = s.attr(AttrId(a));
-        const auto& type = s.attr_type(info.codom);
-        if (type.kind == schema::ValueKind::Bool) {
-            r.bool_attrs.push_back(AttrId(a));
-        } else if (type.name == "Name") {
-            r.name_attrs.push_back(AttrId(a));
-        } else {
-            r.dropped.push_back(fmt::format("{} ({})", info.name, type.name));
-        }
-    }
-    return r;
-}
-
-/// Names PDDL accepts: letters, digits, '-' and '_', starting with a letter.
-std::string pddl_name(std::string_view s, std::string_view fallback) {
-    std::string out;
-    for (char c : s) {
-        out += std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_' ? c : '_';
-    }
-    if (out.empty() || !std::isalpha(static_cast<unsigned char>(out[0]))) {
-        out = std::string(fallback) + out;
-    }
-    return out;
-}
-
-/// Terms and facts of one state read as PDDL.
-class StateReader {
-public:
-    StateReader(const Reading& r, const ACSet& x, bool variables)
-        : r_(r), x_(x), vars_(variables) {}
-
-    /// The most specific part below p (the entity it is a part of).
-    std::pair<ObId, Part> entity_of(ObId ob, Part p) const {
-        for (HomId h : r_.children[ob.index()]) {
-            auto below = x_.incident(h, p);
-            if (!below.empty()) {
-                return entity_of(x_.schema().hom(h).dom, below[0]);
-            }
-        }
-        return {ob, p};
-    }
-
-    /// The name the entity's parts carry, if concrete.
-    std::optional<std::string> pinned(ObId ob, Part p) const {
-        for (;;) {
-            for (AttrId a : r_.name_attrs) {
-                if (x_.schema().attr(a).dom == ob && x_.subpart(a, p).is_concrete()) {
-                    return std::string(x_.subpart(a, p).as_string());
-                }
-            }
-            auto up = r_.parent[ob.index()];
-            if (!up) {
-                return std::nullopt;
-            }
-            p = x_.subpart(*up, p);
-            ob = x_.schema().hom(*up).codom;
-            if (p == kNoPart) {
-                return std::nullopt;
-            }
-        }
-    }
-
-    /// `?x` for a rule's part, `a` for an object or a pinned part.
-    std::string term(ObId ob, Part p) const {
-        auto [eob, ep] = entity_of(ob, p);
-        if (auto name = pinned(eob, ep)) {
-            return pddl_name(*name, "o");
-        }
-        std::string n =
-            pddl_name(x_.part_name(eob, ep),
-                      fmt::format("{}{}-", pddl_name(x_.schema().ob(eob).name, "t"), ep + 1));
-        return vars_ ? "?" + n : n;
-    }
-
-    /// Every entity (most specific part) of the state, in object then part order.
-    std::vector<std::pair<ObId, Part>> entities() const {
-        std::vector<std::pair<ObId, Part>> out;
-        for (std::uint32_t o = 0; o < x_.schema().num_obs(); ++o) {
-            for (Part p = 0; p < x_.num_parts(ObId(o)) && r_.entity[o]; ++p) {
-                if (entity_of(ObId(o), p) == std::pair{ObId(o), p}) {
-                    out.emplace_back(ObId(o), p);
-                }
-            }
-        }
-        return out;
-    }
-
-    /// `(on ?x ?y)` for a fact part; fails on an unset hom.
-    Result<std::string> fact(ObId ob, Part p) const {
-        const Schema& s = x_.schema();
-        std::string out = "(" + pddl_name(s.ob(ob).name, "p");
-        for (HomId h : s.homs_from(ob)) {
-            Part q = x_.subpart(h, p);
-            if (q == kNoPart) {
-                return fail(fmt::format("not expressible: {}({}) is unset", s.hom(h).name,
-                                        x_.part_label(ob, p)));
-            }
-            out += " " + term(s.hom(h).codom, q);
-        }
-        return out + ")";
-    }
-
-    /// Bool attribute values of an entity part (and its ancestors' parts): (fact, value).
-    std::vector<std::pair<std::string, bool>> bools(ObId ob, Part p) const {
-        std::vector<std::pair<std::string, bool>> out;
-        for (AttrId a : r_.bool_attrs) {
-            const auto& info = x_.schema().attr(a);
-            if (info.dom == ob && x_.subpart(a, p).is_concrete()) {
-                out.emplace_back(fmt::format("({} {})", pddl_name(info.name, "p"), term(ob, p)),
-                                 x_.subpart(a, p).as_bool());
-            }
-        }
-        return out;
-    }
-
-private:
-    const Reading& r_;
-    const ACSet& x_;
-    bool vars_;
-};
-
-/// One rule read as an action.
-struct ActionText {
-    std::string name;
-    std::vector<std::pair<std::string, std::string>> params; // ?x, type
-    std::set<std::string> pos, neg, add, del;
-    std::set<std::string> constants; // "c - type"
-};
 
 bool in_image(const hom::ACSetMorphism& m, ObId ob, Part p) {
     const auto& c = m.components[ob.index()];
@@ -193,90 +24,483 @@ Part preimage(const hom::ACSetMorphism& m, ObId ob, Part p) {
     return it == c.end() ? kNoPart : static_cast<Part>(it - c.begin());
 }
 
-Result<ActionText> read_rule(const Reading& rd, const rewrite::Rule& rule) {
-    const Schema& s = rule.L.schema();
-    StateReader L(rd, rule.L, true);
-    ActionText a;
-    a.name = pddl_name(rule.name.substr(0, rule.name.find('~')), "a");
-    std::set<std::pair<ObId, Part>> seen;
-    auto add_param = [&](ObId ob, Part p) {
-        auto e = L.entity_of(ob, p);
-        if (seen.insert(e).second) {
-            std::string t = L.term(e.first, e.second);
-            std::string type = pddl_name(s.ob(e.first).name, "t");
-            if (t[0] == '?') {
-                a.params.emplace_back(t, type);
-            } else {
-                a.constants.insert(t + " - " + type);
+std::string conjunction(const std::vector<std::string>& items) {
+    if (items.size() == 1) {
+        return items[0];
+    }
+    return fmt::format("(and {})", fmt::join(items, " "));
+}
+
+/// How many of the thing's parts are in the image of m (a morphism into the thing's state).
+std::pair<std::size_t, std::size_t> kept_parts(const Thing& t, const hom::ACSetMorphism& m) {
+    std::size_t kept = 0, all = 0;
+    for (std::size_t o = 0; o < t.part.size(); ++o) {
+        if (t.part[o] != kNoPart) {
+            ++all;
+            kept += in_image(m, ObId(static_cast<std::uint32_t>(o)), t.part[o]) ? 1 : 0;
+        }
+    }
+    return {kept, all};
+}
+
+} // namespace
+
+Writer::Writer(const plan::Domain& d, const plan::Problem* p, Reading r, NameSet n)
+    : domain(d), problem(p), rd(std::move(r)), preds(std::move(n)) {}
+
+const std::string& Writer::presence(const std::string& shape) {
+    auto it = marker_presence.find(shape);
+    if (it == marker_presence.end()) {
+        it = marker_presence.emplace(shape, preds.take(pddl_name("marker_" + shape, "p"))).first;
+    }
+    return it->second;
+}
+
+Result<std::string> Writer::atom(const ACSet& x, ObId ob, Part p,
+                                 const std::function<TermText(ObId, Part)>& term) {
+    const Schema& s = x.schema();
+    std::vector<std::string> args, marker_homs, types;
+    std::set<std::string> shapes;
+    for (HomId h : s.homs_from(ob)) {
+        Part q = x.subpart(h, p);
+        if (q == kNoPart) {
+            return fail(
+                fmt::format("not expressible: {}({}) is left open (a fact names its arguments)",
+                            s.hom(h).name, x.part_label(ob, p)));
+        }
+        TermText t = term(s.hom(h).codom, q);
+        if (t.text.empty()) {
+            marker_homs.push_back(pddl_name(s.hom(h).name, "f"));
+            shapes.insert(t.shape);
+        } else {
+            args.push_back(t.text);
+            types.push_back(rd.arg_type(s.hom(h).codom));
+        }
+    }
+    std::string pred = rd.fact_predicate[ob.index()];
+    for (AttrId a : s.attrs_from(ob)) {
+        const AttrReading& ar = rd.attrs[a.index()];
+        if (ar.use != AttrUse::Values) {
+            continue;
+        }
+        const auto& v = x.subpart(a, p);
+        if (!v.is_concrete()) {
+            return fail(fmt::format("not expressible: {}({}) is not a known value, and the fact's "
+                                    "value is part of its predicate",
+                                    s.attr(a).name, x.part_label(ob, p)));
+        }
+        pred += "_" + ar.value_predicate.at(v.to_string());
+    }
+    if (pred != rd.fact_predicate[ob.index()]) {
+        auto it = valued_facts.find(pred);
+        if (it == valued_facts.end()) {
+            valued_facts.emplace(pred, types);
+            preds.take(pred);
+        }
+        pred = valued_facts.find(pred)->first;
+    }
+    if (!marker_homs.empty()) {
+        std::string key = fmt::format("{}|{}", pred, fmt::join(marker_homs, "|"));
+        auto it = marker_facts.find(key);
+        if (it == marker_facts.end()) {
+            std::string want = fmt::format("{}_{}_marker", pred, fmt::join(marker_homs, "_"));
+            it = marker_facts.emplace(key, MarkerFact{preds.take(want), types, {}}).first;
+        }
+        it->second.shapes.insert(shapes.begin(), shapes.end());
+        pred = it->second.predicate;
+    }
+    return args.empty() ? fmt::format("({})", pred)
+                        : fmt::format("({} {})", pred, fmt::join(args, " "));
+}
+
+void Writer::attr_facts(const ACSet& x, const Thing& t, const std::string& term,
+                        std::vector<std::pair<std::string, bool>>& out) const {
+    const Schema& s = x.schema();
+    for (std::uint32_t i = 0; i < s.num_attrs(); ++i) {
+        const auto& info = s.attr(AttrId(i));
+        Part p = t.part[info.dom.index()];
+        if (p == kNoPart || !x.subpart(AttrId(i), p).is_concrete()) {
+            continue;
+        }
+        const AttrReading& ar = rd.attrs[i];
+        const auto& v = x.subpart(AttrId(i), p);
+        if (ar.use == AttrUse::Bool) {
+            out.emplace_back(fmt::format("({} {})", ar.predicate, term), v.as_bool());
+        } else if (ar.use == AttrUse::Values) {
+            out.emplace_back(fmt::format("({} {})", ar.value_predicate.at(v.to_string()), term),
+                             true);
+        }
+    }
+}
+
+bool Writer::may_coincide(const Thing& a, const Thing& b) const {
+    if (a.component != b.component) {
+        return false;
+    }
+    if (!rd.components[a.component].forest) {
+        for (std::size_t o = 0; o < a.part.size(); ++o) {
+            if (a.part[o] != kNoPart && b.part[o] != kNoPart) {
+                return true;
             }
         }
+        return false;
+    }
+    // In a forest a thing has its bottom's ancestors: they coincide when one is below the other.
+    auto below = [&](ObId sub, ObId super) {
+        for (std::optional<ObId> ob = sub; ob;) {
+            if (*ob == super) {
+                return true;
+            }
+            auto up = rd.parent[ob->index()];
+            ob = up ? std::optional(rd.schema->hom(*up).codom) : std::nullopt;
+        }
+        return false;
+    };
+    return below(a.bottom, b.bottom) || below(b.bottom, a.bottom);
+}
+
+Result<bool> Writer::find_marker_shapes() {
+    for (const auto& rule : domain.rules) {
+        NameSet scratch;
+        auto L = find_things(rd, rule->L, {}, scratch, "the precondition of " + rule->name);
+        auto R = find_things(rd, rule->R, {}, scratch, "the effect of " + rule->name);
+        if (!L || !R) {
+            return fail(L ? R.error() : L.error());
+        }
+        for (const auto& t : L->things) {
+            auto [kept, all] = kept_parts(t, rule->l);
+            if (kept == 0) {
+                marker_shapes.insert(t.shape);
+            } else if (kept != all) {
+                return fail(fmt::format("not expressible: {} deletes some parts of the thing {} "
+                                        "({}) and keeps others",
+                                        rule->name, t.name, t.shape));
+            }
+        }
+        for (const auto& t : R->things) {
+            auto [kept, all] = kept_parts(t, rule->r);
+            if (kept == 0) {
+                marker_shapes.insert(t.shape);
+            } else if (kept != all) {
+                return fail(fmt::format("not expressible: {} creates a part of the thing {} ({}) "
+                                        "that it keeps",
+                                        rule->name, t.name, t.shape));
+            }
+        }
+    }
+    return true;
+}
+
+namespace {
+
+/// The rule's things and how they correspond.
+Result<RuleThings> rule_things(const Reading& rd, const rewrite::Rule& rule, NameSet& names) {
+    NameSet scratch;
+    auto L = find_things(rd, rule.L, {}, names, "the precondition of " + rule.name);
+    auto R = find_things(rd, rule.R, {}, scratch, "the effect of " + rule.name);
+    if (!L || !R) {
+        return fail(L ? R.error() : L.error());
+    }
+    RuleThings rt{std::move(*L), std::move(*R), {}};
+    for (auto& t : rt.L.things) {
+        t.marker = kept_parts(t, rule.l).first == 0;
+    }
+    std::vector<bool> used(rt.L.things.size(), false);
+    for (auto& t : rt.R.things) {
+        std::size_t to = kNone;
+        for (std::size_t o = 0; o < t.part.size(); ++o) {
+            ObId ob(static_cast<std::uint32_t>(o));
+            Part k = t.part[o] == kNoPart ? kNoPart : preimage(rule.r, ob, t.part[o]);
+            if (k == kNoPart) {
+                continue;
+            }
+            std::size_t l = rt.L.at(ob, rule.l(ob, k));
+            if (to != kNone && to != l) {
+                return fail(
+                    fmt::format("not expressible: {} glues two things into one", rule.name));
+            }
+            to = l;
+        }
+        t.marker = to == kNone;
+        if (to != kNone && (used[to] || rt.L.things[to].shape != t.shape)) {
+            return fail(fmt::format("not expressible: {} changes which parts the thing {} has",
+                                    rule.name, rt.L.things[to].name));
+        }
+        if (to != kNone) {
+            used[to] = true;
+        }
+        rt.r_to_l.push_back(to);
+    }
+    return rt;
+}
+
+/// The attributes of the thing's parts.
+std::vector<AttrId> attrs_of(const ACSet& x, const Thing& t) {
+    std::vector<AttrId> out;
+    for (std::uint32_t i = 0; i < x.schema().num_attrs(); ++i) {
+        if (t.part[x.schema().attr(AttrId(i)).dom.index()] != kNoPart) {
+            out.emplace_back(i);
+        }
+    }
+    return out;
+}
+
+/// Fails when a marker thing's attributes are read (a deleted marker must match any marker).
+Result<bool> check_marker_attrs(const ACSet& x, const Thing& t, const std::string& rule) {
+    const Schema& s = x.schema();
+    for (std::uint32_t i = 0; i < s.num_attrs(); ++i) {
+        const auto& info = s.attr(AttrId(i));
+        Part p = t.part[info.dom.index()];
+        if (p == kNoPart) {
+            continue;
+        }
+        const auto& v = x.subpart(AttrId(i), p);
+        if (v.is_concrete() ||
+            (v.is_var() && x.var_incident(info.codom, v.var_index()).size() > 1)) {
+            return fail(fmt::format("not expressible: {} reads {} of the {} it deletes (a marker: "
+                                    "not a PDDL object)",
+                                    rule, info.name, t.shape));
+        }
+    }
+    return true;
+}
+
+/// The attribute updates of a kept thing: its parts' values in R against L.
+Result<bool> attr_updates(const Writer& w, const rewrite::Rule& rule, const Thing& lt,
+                          const Thing& rt, const std::string& term, ActionText& a) {
+    const Schema& s = rule.L.schema();
+    for (std::uint32_t i = 0; i < s.num_attrs(); ++i) {
+        AttrId at(i);
+        const auto& info = s.attr(at);
+        const AttrReading& ar = w.rd.attrs[i];
+        Part lp = lt.part[info.dom.index()], rp = rt.part[info.dom.index()];
+        if (lp == kNoPart || ar.use == AttrUse::Dropped || ar.use == AttrUse::Name) {
+            continue;
+        }
+        const auto &before = rule.L.subpart(at, lp), &now = rule.R.subpart(at, rp);
+        if (now.is_unset() || (before.is_concrete() && now.is_concrete() && before == now)) {
+            continue;
+        }
+        if (now.is_var()) {
+            Part k = preimage(rule.r, info.dom, rp);
+            const auto& kv = k == kNoPart ? now : rule.K.subpart(at, k);
+            bool same = before.is_var() && k != kNoPart && kv.is_var() &&
+                        rule.l.var(info.codom, kv.var_index()) == before &&
+                        rule.r.var(info.codom, kv.var_index()) == now;
+            if (same) {
+                continue; // kept as it was (the same variable in L, K and R)
+            }
+            return fail(fmt::format("not expressible: {} sets {}({}) to a value it reads "
+                                    "elsewhere or to an unknown",
+                                    rule.name, info.name, term));
+        }
+        if (ar.use == AttrUse::Bool) {
+            (now.as_bool() ? a.add : a.del).insert(fmt::format("({} {})", ar.predicate, term));
+            continue;
+        }
+        for (const auto& [v, pred] : ar.value_predicate) {
+            (v == now.to_string() ? a.add : a.del).insert(fmt::format("({} {})", pred, term));
+        }
+    }
+    return true;
+}
+
+} // namespace
+
+Result<ActionText> Writer::read_rule(const rewrite::Rule& rule) {
+    NameSet names;
+    auto things = rule_things(rd, rule, names);
+    if (!things) {
+        return fail(things.error());
+    }
+    const Things& L = things->L;
+    const Things& R = things->R;
+    ActionText a;
+    a.name = pddl_name(rule.name.substr(0, rule.name.find('~')), "a");
+    std::vector<std::string> term(L.things.size());
+    auto add_param = [&](std::size_t i) {
+        const Thing& t = L.things[i];
+        if (t.marker || !term[i].empty()) {
+            return;
+        }
+        term[i] = t.pinned ? t.name : "?" + t.name;
+        if (t.pinned) {
+            a.constants.insert(t.name + " - " + thing_type(rd, t));
+            return;
+        }
+        a.params.emplace_back(term[i], thing_type(rd, t));
+        a.param_parts.emplace_back(t.first, t.part[t.first.index()]);
+        a.param_things.push_back(i);
     };
     for (const auto& p : rule.parameters) {
-        add_param(p.ob, p.part);
+        if (L.at(p.ob, p.part) != Things::kNoThing) { // a fact parameter is in the precondition
+            add_param(L.at(p.ob, p.part));
+        }
     }
-    for (auto [ob, p] : L.entities()) {
-        add_param(ob, p);
+    for (std::size_t i = 0; i < L.things.size(); ++i) {
+        add_param(i);
     }
-    for (ObId ob : rd.predicates) {
+    auto thing_term = [&](std::size_t i) { return TermText{term[i], L.things[i].shape}; };
+    auto l_term = [&](ObId ob, Part p) { return thing_term(L.at(ob, p)); };
+    auto r_term = [&](ObId ob, Part p) {
+        std::size_t i = R.at(ob, p);
+        std::size_t l = things->r_to_l[i];
+        return l == kNone ? TermText{"", R.things[i].shape} : thing_term(l);
+    };
+    if (auto ok = rule_facts(rule, l_term, r_term, a); !ok) {
+        return fail(ok.error());
+    }
+    if (auto ok = rule_things_conditions(rule, *things, term, a); !ok) {
+        return fail(ok.error());
+    }
+    if (auto ok = rule_nacs(rule, l_term, a); !ok) {
+        return fail(ok.error());
+    }
+    for (std::size_t i = 0; i < a.param_things.size(); ++i) {
+        for (std::size_t j = i + 1; j < a.param_things.size(); ++j) {
+            if (may_coincide(L.things[a.param_things[i]], L.things[a.param_things[j]])) {
+                a.inequalities.push_back(
+                    fmt::format("{}|{}", a.params[i].first, a.params[j].first));
+            }
+        }
+    }
+    return a;
+}
+
+Result<bool> Writer::rule_facts(const rewrite::Rule& rule, const TermFn& l_term,
+                                const TermFn& r_term, ActionText& a) {
+    bool sets = false;
+    for (ObId ob : rd.facts) {
+        sets = std::find(rule.relations.begin(), rule.relations.end(), ob) != rule.relations.end();
         for (Part p = 0; p < rule.L.num_parts(ob); ++p) {
-            auto f = L.fact(ob, p);
+            auto f = atom(rule.L, ob, p, l_term);
             if (!f) {
                 return fail(f.error());
             }
             a.pos.insert(*f);
-            if (!in_image(rule.l, ob, p)) {
+            Part k = preimage(rule.l, ob, p);
+            if (k == kNoPart) {
                 a.del.insert(*f);
-            }
-        }
-    }
-    for (auto [ob, p] : L.entities()) {
-        for (auto [f, v] : L.bools(ob, p)) {
-            (v ? a.pos : a.neg).insert(f);
-        }
-    }
-    // R's parts, read through K in L's terms: created facts and changed Bool values.
-    StateReader R(rd, rule.R, true);
-    for (ObId ob : rd.predicates) {
-        for (Part p = 0; p < rule.R.num_parts(ob); ++p) {
-            if (in_image(rule.r, ob, p)) {
                 continue;
             }
-            std::string f = "(" + pddl_name(s.ob(ob).name, "p");
-            for (HomId h : s.homs_from(ob)) {
-                ObId to = s.hom(h).codom;
-                Part k = preimage(rule.r, to, rule.R.subpart(h, p));
-                if (k == kNoPart) {
-                    return fail(fmt::format("not expressible: {} creates an object", rule.name));
-                }
-                f += " " + L.term(to, rule.l(to, k));
+            auto g = atom(rule.R, ob, rule.r(ob, k), r_term); // a kept fact, maybe redirected
+            if (!g) {
+                return fail(g.error());
             }
-            a.add.insert(f + ")");
+            if (*g != *f) {
+                a.del.insert(*f);
+                a.add.insert(*g);
+                if (!sets) {
+                    a.neg.insert(*g);
+                }
+            }
         }
-    }
-    for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
-        for (Part k = 0; k < rule.K.num_parts(ObId(o)) && rd.entity[o]; ++k) {
-            Part lp = rule.l(ObId(o), k), rp = rule.r(ObId(o), k);
-            for (AttrId at : rd.bool_attrs) {
-                if (s.attr(at).dom != ObId(o) || !rule.R.subpart(at, rp).is_concrete()) {
-                    continue;
-                }
-                bool now = rule.R.subpart(at, rp).as_bool();
-                const auto& before = rule.L.subpart(at, lp);
-                if (before.is_concrete() && before.as_bool() == now) {
-                    continue;
-                }
-                auto f =
-                    fmt::format("({} {})", pddl_name(s.attr(at).name, "p"), L.term(ObId(o), lp));
-                (now ? a.add : a.del).insert(f);
+        for (Part p : rule.created_parts(ob)) {
+            auto f = atom(rule.R, ob, p, r_term);
+            if (!f) {
+                return fail(f.error());
+            }
+            a.add.insert(*f);
+            if (!sets && a.pos.count(*f) == 0) {
+                a.neg.insert(*f); // a second equal part is not expressed
+                creates_facts_not_sets = true;
             }
         }
     }
+    return true;
+}
+
+Result<bool> Writer::rule_things_conditions(const rewrite::Rule& rule, const RuleThings& rt,
+                                            const std::vector<std::string>& term, ActionText& a) {
+    const Things& L = rt.L;
+    std::set<std::string> deleted, created;
+    for (std::size_t i = 0; i < L.things.size(); ++i) {
+        const Thing& t = L.things[i];
+        if (t.marker) {
+            if (!deleted.insert(t.shape).second) {
+                return fail(fmt::format("not expressible: {} deletes two {} things (at most one "
+                                        "marker of a shape)",
+                                        rule.name, t.shape));
+            }
+            if (auto ok = check_marker_attrs(rule.L, t, rule.name); !ok) {
+                return fail(ok.error());
+            }
+            continue;
+        }
+        if (!rd.components[t.component].forest) {
+            for (std::size_t o = 0; o < t.part.size(); ++o) {
+                if (t.part[o] != kNoPart) {
+                    a.pos.insert(fmt::format("({} {})", rd.member_predicate[o], term[i]));
+                }
+            }
+        }
+        std::vector<std::pair<std::string, bool>> values;
+        attr_facts(rule.L, t, term[i], values);
+        for (const auto& [f, v] : values) {
+            (v ? a.pos : a.neg).insert(f);
+        }
+        for (std::uint32_t at = 0; at < rule.L.schema().num_attrs(); ++at) {
+            const auto& info = rule.L.schema().attr(AttrId(at));
+            Part p = t.part[info.dom.index()];
+            if (p != kNoPart && rd.attrs[at].use == AttrUse::Values &&
+                rule.L.subpart(AttrId(at), p).is_var() &&
+                rule.L.var_incident(info.codom, rule.L.subpart(AttrId(at), p).var_index()).size() >
+                    1) {
+                return fail(fmt::format("not expressible: {} asks two values of {} to be equal",
+                                        rule.name, info.name));
+            }
+        }
+    }
+    for (std::size_t i = 0; i < rt.R.things.size(); ++i) {
+        const Thing& t = rt.R.things[i];
+        if (rt.r_to_l[i] == kNone) {
+            for (AttrId at : attrs_of(rule.R, t)) {
+                if (rule.R.subpart(at, t.part[rule.R.schema().attr(at).dom.index()])
+                        .is_concrete()) {
+                    return fail(
+                        fmt::format("not expressible: {} creates a {} with a known {} (a new "
+                                    "object, which PDDL cannot make; only a marker, whose "
+                                    "values are unknown, is expressed)",
+                                    rule.name, t.shape, rule.R.schema().attr(at).name));
+                }
+            }
+            if (!created.insert(t.shape).second) {
+                return fail(fmt::format("not expressible: {} creates two {} things (at most one "
+                                        "marker of a shape)",
+                                        rule.name, t.shape));
+            }
+            continue;
+        }
+        if (auto ok = attr_updates(*this, rule, L.things[rt.r_to_l[i]], t, term[rt.r_to_l[i]], a);
+            !ok) {
+            return fail(ok.error());
+        }
+    }
+    for (const auto& shape : deleted) {
+        a.pos.insert(fmt::format("({})", presence(shape)));
+        a.del.insert(fmt::format("({})", presence(shape)));
+        a.deleted_markers.insert(shape);
+    }
+    for (const auto& shape : created) {
+        a.add.insert(fmt::format("({})", presence(shape)));
+        if (deleted.count(shape) == 0) {
+            a.neg.insert(fmt::format("({})", presence(shape)));
+        }
+    }
+    return true;
+}
+
+Result<bool> Writer::rule_nacs(const rewrite::Rule& rule, const TermFn& l_term, ActionText& a) {
     for (const auto& c : rule.conditions) {
         if (!c.negative) {
             return fail(
                 fmt::format("not expressible: positive application condition of {}", rule.name));
         }
-        StateReader N(rd, c.n_state, true);
+        const Schema& s = rule.L.schema();
+        auto n_term = [&](ObId ob, Part p) {
+            Part q = preimage(c.n, ob, p);
+            return q == kNoPart ? TermText{"?", ""} : l_term(ob, q);
+        };
         std::vector<std::string> extra;
         for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
             for (Part p = 0; p < c.n_state.num_parts(ObId(o)); ++p) {
@@ -288,7 +512,7 @@ Result<ActionText> read_rule(const Reading& rd, const rewrite::Rule& rule) {
                                             "object",
                                             c.name, rule.name));
                 }
-                auto f = N.fact(ObId(o), p);
+                auto f = atom(c.n_state, ObId(o), p, n_term);
                 if (!f) {
                     return fail(f.error());
                 }
@@ -302,23 +526,30 @@ Result<ActionText> read_rule(const Reading& rd, const rewrite::Rule& rule) {
         }
         a.neg.insert(extra[0]);
     }
-    return a;
+    return true;
 }
 
-bool comparable(const Schema& s, const Reading& rd, const std::string& a, const std::string& b) {
-    auto is_below = [&](std::string_view sub, std::string_view super) {
-        auto ob = s.find_ob(sub);
-        while (ob) {
-            if (pddl_name(s.ob(*ob).name, "t") == super) {
-                return true;
+Result<bool> Writer::marker_dangling(const std::string& rule, ActionText& a) {
+    for (const auto& shape : a.deleted_markers) {
+        for (const auto& [key, mf] : marker_facts) {
+            if (mf.shapes.count(shape) == 0) {
+                continue;
             }
-            auto up = rd.parent[ob->index()];
-            ob = up ? std::optional(s.hom(*up).codom) : std::nullopt;
+            std::string f = fmt::format("({})", mf.predicate);
+            if (!mf.types.empty()) {
+                return fail(fmt::format("not expressible: {} deletes the {} marker, which facts "
+                                        "({} ...) may refer to; STRIPS cannot ask that none does",
+                                        rule, shape, mf.predicate));
+            }
+            if (a.del.count(f) == 0 || a.add.count(f) != 0) {
+                a.neg.insert(f);
+            }
         }
-        return false;
-    };
-    return is_below(a, b) || is_below(b, a);
+    }
+    return true;
 }
+
+namespace {
 
 /// Whether some rule of the group has one parameter standing for both ?x and ?y (`x=y`).
 bool identified(const std::vector<const rewrite::Rule*>& group, std::string_view x,
@@ -326,117 +557,13 @@ bool identified(const std::vector<const rewrite::Rule*>& group, std::string_view
     for (const auto* r : group) {
         for (const auto& p : r->parameters) {
             std::string names = "=" + p.name + "=";
-            if (names.find("=" + std::string(x) + "=") != std::string::npos &&
-                names.find("=" + std::string(y) + "=") != std::string::npos) {
+            std::string xs = "=" + std::string(x) + "=", ys = "=" + std::string(y) + "=";
+            if (names.find(xs) != std::string::npos && names.find(ys) != std::string::npos) {
                 return true;
             }
         }
     }
     return false;
-}
-
-std::string conjunction(const std::vector<std::string>& items) {
-    if (items.size() == 1) {
-        return items[0];
-    }
-    return fmt::format("(and {})", fmt::join(items, " "));
-}
-
-/// One action from a group of variants (export.hpp).
-Result<std::string> write_action(const Schema& s, const Reading& rd,
-                                 const std::vector<const rewrite::Rule*>& group,
-                                 std::set<std::string>& constants) {
-    std::vector<ActionText> texts;
-    for (const auto* r : group) {
-        auto t = read_rule(rd, *r);
-        if (!t) {
-            return fail(t.error());
-        }
-        constants.insert(t->constants.begin(), t->constants.end());
-        texts.push_back(std::move(*t));
-    }
-    std::size_t finest = 0;
-    for (const auto& t : texts) {
-        finest = std::max(finest, t.params.size());
-    }
-    std::optional<ActionText> merged;
-    for (auto& t : texts) {
-        if (t.params.size() != finest) {
-            continue;
-        }
-        if (!merged) {
-            merged = t;
-            continue;
-        }
-        auto keep_common = [](std::set<std::string>& a, const std::set<std::string>& b) {
-            std::erase_if(a, [&](const std::string& x) { return b.count(x) == 0; });
-        };
-        keep_common(merged->pos, t.pos);
-        keep_common(merged->neg, t.neg);
-        merged->add.insert(t.add.begin(), t.add.end());
-        merged->del.insert(t.del.begin(), t.del.end());
-    }
-    const ActionText& a = *merged;
-    std::vector<std::string> pre(a.pos.begin(), a.pos.end());
-    for (const auto& f : a.neg) {
-        pre.push_back("(not " + f + ")");
-    }
-    for (std::size_t i = 0; i < a.params.size(); ++i) {
-        for (std::size_t j = i + 1; j < a.params.size(); ++j) {
-            const auto &p = a.params[i], &q = a.params[j];
-            if (comparable(s, rd, p.second, q.second) &&
-                !identified(group, p.first.substr(1), q.first.substr(1))) {
-                pre.push_back(fmt::format("(not (= {} {}))", p.first, q.first));
-            }
-        }
-    }
-    std::vector<std::string> eff(a.add.begin(), a.add.end());
-    for (const auto& f : a.del) {
-        eff.push_back("(not " + f + ")");
-    }
-    std::string params;
-    for (const auto& [v, t] : a.params) {
-        params += fmt::format("{}{} - {}", params.empty() ? "" : " ", v, t);
-    }
-    std::string out = fmt::format("  (:action {}\n    :parameters ({})\n", a.name, params);
-    if (!pre.empty()) {
-        out += fmt::format("    :precondition {}\n", conjunction(pre));
-    }
-    return out + fmt::format("    :effect {})\n", eff.empty() ? "(and)" : conjunction(eff));
-}
-
-std::string type_name(const Schema& s, ObId ob) {
-    return pddl_name(s.ob(ob).name, "t");
-}
-
-std::string write_types(const Schema& s, const Reading& rd) {
-    std::string out;
-    for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
-        if (!rd.entity[o] || type_name(s, ObId(o)) == "object") {
-            continue;
-        }
-        auto up = rd.parent[o];
-        out += fmt::format(" {} - {}", type_name(s, ObId(o)),
-                           up ? type_name(s, s.hom(*up).codom) : "object");
-    }
-    return out;
-}
-
-std::string write_predicates(const Schema& s, const Reading& rd) {
-    std::string out;
-    for (ObId ob : rd.predicates) {
-        out += "    (" + pddl_name(s.ob(ob).name, "p");
-        int i = 1;
-        for (HomId h : s.homs_from(ob)) {
-            out += fmt::format(" ?x{} - {}", i++, type_name(s, s.hom(h).codom));
-        }
-        out += ")\n";
-    }
-    for (AttrId a : rd.bool_attrs) {
-        out += fmt::format("    ({} ?x - {})\n", pddl_name(s.attr(a).name, "p"),
-                           type_name(s, s.attr(a).dom));
-    }
-    return out;
 }
 
 /// The rules grouped by action name (the text before `~`), in first-appearance order.
@@ -454,113 +581,159 @@ std::vector<std::vector<const rewrite::Rule*>> group_rules(const plan::Domain& d
     return groups;
 }
 
-/// The facts of a state as PDDL atoms (Bool attributes true as facts, false left out unless
-/// `negatives`, then written negated).
-Result<std::vector<std::string>> state_facts(const Reading& rd, const ACSet& x, bool negatives) {
-    StateReader sr(rd, x, false);
-    std::vector<std::string> out;
-    for (ObId ob : rd.predicates) {
-        for (Part p = 0; p < x.num_parts(ob); ++p) {
-            auto f = sr.fact(ob, p);
-            if (!f) {
-                return fail(f.error());
-            }
-            out.push_back(*f);
-        }
+/// The variants of one action merged (export.hpp): the finest variants' common preconditions.
+ActionText merge(std::vector<ActionText> texts) {
+    std::size_t finest = 0;
+    for (const auto& t : texts) {
+        finest = std::max(finest, t.params.size());
     }
-    for (auto [ob, p] : sr.entities()) {
-        for (auto [f, v] : sr.bools(ob, p)) {
-            if (v || negatives) {
-                out.push_back(v ? f : "(not " + f + ")");
-            }
+    std::optional<ActionText> merged;
+    for (auto& t : texts) {
+        if (t.params.size() != finest) {
+            continue;
         }
+        if (!merged) {
+            merged = std::move(t);
+            continue;
+        }
+        auto keep_common = [](std::set<std::string>& a, const std::set<std::string>& b) {
+            std::erase_if(a, [&](const std::string& x) { return b.count(x) == 0; });
+        };
+        keep_common(merged->pos, t.pos);
+        keep_common(merged->neg, t.neg);
+        merged->add.insert(t.add.begin(), t.add.end());
+        merged->del.insert(t.del.begin(), t.del.end());
     }
-    return out;
+    return std::move(*merged);
 }
 
 } // namespace
 
-Result<std::string> export_domain(const plan::Domain& domain) {
-    const Schema& s = *domain.schema;
-    auto rd = read_schema(s);
-    if (!rd) {
-        return fail(rd.error());
-    }
-    std::string actions;
-    std::set<std::string> constants;
+Result<std::string> Writer::write_actions(std::vector<Exported::Action>& actions,
+                                          std::set<std::string>& constants) {
+    std::string out;
     for (const auto& group : group_rules(domain)) {
-        auto a = write_action(s, *rd, group, constants);
-        if (!a) {
-            return fail(a.error());
+        std::vector<ActionText> texts;
+        for (const auto* r : group) {
+            auto t = read_rule(*r);
+            if (!t) {
+                return fail(t.error());
+            }
+            if (auto ok = marker_dangling(r->name, *t); !ok) {
+                return fail(ok.error());
+            }
+            constants.insert(t->constants.begin(), t->constants.end());
+            texts.push_back(std::move(*t));
         }
-        actions += *a;
+        ActionText a = merge(std::move(texts));
+        std::vector<std::string> pre(a.pos.begin(), a.pos.end());
+        for (const auto& f : a.neg) {
+            pre.push_back("(not " + f + ")");
+        }
+        if (!goal_predicate.empty()) {
+            pre.push_back(fmt::format("(not ({}))", goal_predicate));
+        }
+        for (const auto& pair : a.inequalities) {
+            std::string x = pair.substr(0, pair.find('|')), y = pair.substr(pair.find('|') + 1);
+            if (!identified(group, x.substr(1), y.substr(1))) {
+                pre.push_back(fmt::format("(not (= {} {}))", x, y));
+            }
+        }
+        std::vector<std::string> eff(a.add.begin(), a.add.end());
+        for (const auto& f : a.del) {
+            if (a.add.count(f) == 0) {
+                eff.push_back("(not " + f + ")");
+            }
+        }
+        std::string params;
+        for (const auto& [v, t] : a.params) {
+            params += fmt::format("{}{} - {}", params.empty() ? "" : " ", v, t);
+        }
+        out += fmt::format("  (:action {}\n    :parameters ({})\n", a.name, params);
+        if (!pre.empty()) {
+            out += fmt::format("    :precondition {}\n", conjunction(pre));
+        }
+        out += fmt::format("    :effect {})\n", eff.empty() ? "(and)" : conjunction(eff));
+        actions.push_back({a.name, group.size() == 1 ? group[0] : nullptr, a.param_parts});
     }
-    std::string out = fmt::format("; Exported by catplan from the domain {}.\n", domain.name);
-    if (!rd->dropped.empty()) {
-        out += fmt::format("; Not expressible, left out: attributes {}.\n",
-                           fmt::join(rd->dropped, ", "));
-    }
-    out += fmt::format("(define (domain {})\n", pddl_name(domain.name, "d"));
-    out += "  (:requirements :strips :typing :negative-preconditions :equality)\n";
-    out += fmt::format("  (:types{})\n", write_types(s, *rd));
-    if (!constants.empty()) {
-        out += fmt::format("  (:constants {})\n", fmt::join(constants, " "));
-    }
-    out += "  (:predicates\n" + write_predicates(s, *rd) + "  )\n" + actions + ")\n";
     return out;
 }
 
-Result<std::string> export_problem(const plan::Problem& problem) {
-    const Schema& s = *problem.domain->schema;
-    auto rd = read_schema(s);
-    if (!rd) {
-        return fail(rd.error());
-    }
-    std::set<std::string> constants;
-    for (const auto& group : group_rules(*problem.domain)) {
-        auto a = write_action(s, *rd, group, constants);
-        if (!a) {
-            return fail(a.error());
+std::string Writer::write_types() const {
+    std::string out;
+    const Schema& s = *rd.schema;
+    for (const auto& c : rd.components) {
+        if (!c.forest) {
+            out += fmt::format(" {} - object", c.type_name);
+            continue;
+        }
+        for (ObId ob : c.obs) {
+            if (rd.type_of_ob[ob.index()] == "object") {
+                continue;
+            }
+            auto up = rd.parent[ob.index()];
+            out += fmt::format(" {} - {}", rd.type_of_ob[ob.index()],
+                               up ? rd.type_of_ob[s.hom(*up).codom.index()] : "object");
         }
     }
-    StateReader init(*rd, *problem.initial, false);
-    std::vector<std::string> objects;
-    std::set<std::string> names;
-    for (auto [ob, p] : init.entities()) {
-        std::string n = init.term(ob, p);
-        names.insert(n);
-        std::string decl = n + " - " + type_name(s, ob);
-        if (constants.count(decl) == 0) {
-            objects.push_back(decl);
-        }
-    }
-    auto facts = state_facts(*rd, *problem.initial, false);
-    if (!facts) {
-        return fail(facts.error());
-    }
-    StateReader goal(*rd, *problem.goal, false);
-    for (auto [ob, p] : goal.entities()) {
-        if (names.count(goal.term(ob, p)) == 0) {
-            return fail(fmt::format("not expressible: the goal's {} names no object of the "
-                                    "initial state (PDDL goals name objects)",
-                                    problem.goal->part_label(ob, p)));
-        }
-    }
-    auto goals = state_facts(*rd, *problem.goal, true);
-    if (!goals) {
-        return fail(goals.error());
-    }
-    // catplan goals are patterns (any parts that fit); PDDL goals name objects, so a goal part is
-    // read as the initial object of the same name (exact for imported goals, which pin names).
-    std::string out = fmt::format("; Exported by catplan from the problem {}; goal parts name the "
-                                  "initial state's objects.\n",
-                                  problem.name);
-    out += fmt::format("(define (problem {})\n  (:domain {})\n", pddl_name(problem.name, "p"),
-                       pddl_name(problem.domain->name, "d"));
-    out += fmt::format("  (:objects {})\n", fmt::join(objects, " "));
-    out += fmt::format("  (:init {})\n", fmt::join(*facts, "\n         "));
-    out += fmt::format("  (:goal {}))\n", goals->empty() ? "(and)" : conjunction(*goals));
     return out;
 }
 
-} // namespace catplan::pddl
+std::string Writer::write_predicates() const {
+    const Schema& s = *rd.schema;
+    std::string out;
+    for (ObId ob : rd.facts) {
+        bool valued = std::any_of(s.attrs_from(ob).begin(), s.attrs_from(ob).end(), [&](AttrId a) {
+            return rd.attrs[a.index()].use == AttrUse::Values;
+        });
+        if (valued) {
+            continue; // its predicates are valued_facts
+        }
+        out += "    (" + rd.fact_predicate[ob.index()];
+        int i = 1;
+        for (HomId h : s.homs_from(ob)) {
+            out += fmt::format(" ?x{} - {}", i++, rd.arg_type(s.hom(h).codom));
+        }
+        out += ")\n";
+    }
+    for (const auto& [pred, types] : valued_facts) {
+        out += "    (" + pred;
+        for (std::size_t i = 0; i < types.size(); ++i) {
+            out += fmt::format(" ?x{} - {}", i + 1, types[i]);
+        }
+        out += ")\n";
+    }
+    for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
+        if (!rd.member_predicate[o].empty()) {
+            out += fmt::format("    ({} ?x - {})\n", rd.member_predicate[o], rd.arg_type(ObId(o)));
+        }
+    }
+    for (std::uint32_t a = 0; a < s.num_attrs(); ++a) {
+        const auto& ar = rd.attrs[a];
+        const std::string& type = rd.arg_type(s.attr(AttrId(a)).dom);
+        if (ar.use == AttrUse::Bool) {
+            out += fmt::format("    ({} ?x - {})\n", ar.predicate, type);
+        }
+        for (const auto& [v, pred] : ar.value_predicate) {
+            if (rd.entity[s.attr(AttrId(a)).dom.index()]) {
+                out += fmt::format("    ({} ?x - {})\n", pred, type);
+            }
+        }
+    }
+    for (const auto& [shape, pred] : marker_presence) {
+        out += fmt::format("    ({})\n", pred);
+    }
+    for (const auto& [key, mf] : marker_facts) {
+        out += "    (" + mf.predicate;
+        for (std::size_t i = 0; i < mf.types.size(); ++i) {
+            out += fmt::format(" ?x{} - {}", i + 1, mf.types[i]);
+        }
+        out += ")\n";
+    }
+    if (!goal_predicate.empty()) {
+        out += fmt::format("    ({})\n", goal_predicate);
+    }
+    return out;
+}
+
+} // namespace catplan::pddl::detail

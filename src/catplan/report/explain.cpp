@@ -130,17 +130,20 @@ std::string and_list(const std::vector<std::string>& items) {
     return fmt::format("{} and {}", fmt::join(head, ", "), items.back());
 }
 
-// The parts of `parts_of` (deleted_parts or created_parts) of every object, through m.
-template <typename Parts>
-std::vector<dot::PartClass> marks(const rewrite::Rule& rule, const hom::ACSetMorphism& m,
-                                  Parts parts_of, const char* css_class) {
+// The parts of a side of the rule (L or R) through m: those `changed` lists (deleted_parts or
+// created_parts) as `css_class`, the others, which K keeps, as "matched".
+std::vector<dot::PartClass> marks(const ACSet& side, const hom::ACSetMorphism& m,
+                                  const std::vector<std::vector<Part>>& changed,
+                                  const char* css_class) {
     std::vector<dot::PartClass> out;
     if (m.components.empty()) {
         return out; // no morphism was kept
     }
-    for (std::uint32_t o = 0; o < rule.L.schema().num_obs(); ++o) {
-        for (Part q : parts_of(ObId(o))) {
-            out.push_back({ObId(o), m.components[o][q], css_class});
+    for (std::uint32_t o = 0; o < side.schema().num_obs(); ++o) {
+        const auto& gone = changed[o];
+        for (Part q = 0; q < side.num_parts(ObId(o)); ++q) {
+            bool c = std::find(gone.begin(), gone.end(), q) != gone.end();
+            out.push_back({ObId(o), m.components[o][q], c ? css_class : "matched"});
         }
     }
     return out;
@@ -198,11 +201,11 @@ std::vector<std::string> binding_reasons(const SchemaMap& f, const rewrite::Rule
             facts.push_back(transfer::part_statement(x, source_ob, in_x));
         }
         std::string from = transfer::part_word(x, source_ob, in_x);
-        // A target part known only by its label (the hand-empty block's Receptacle) is named by
-        // its object alone: a label means nothing to a person.
-        std::string to = transfer::part_word(y, ob, in_y).starts_with('#')
-                             ? "a " + lines[ob.index()].name
-                             : transfer::part_statement(y, ob, in_y);
+        // A target part known only by its label or a made-up name (the hand-empty block's
+        // Receptacle) is named by its object alone: such a name means nothing to a person.
+        std::string to = transfer::has_readable_word(y, ob, in_y)
+                             ? transfer::part_statement(y, ob, in_y)
+                             : "a " + lines[ob.index()].name;
         std::pair<std::string, std::string> item{
             from, fmt::format("{} ↦ {} because {} and {} ⇒ {}", from, to, and_list(facts),
                               lines[ob.index()].name, lines[ob.index()].image)};
@@ -262,10 +265,13 @@ StepMarks step_marks(const rewrite::Rule* source_rule, const rewrite::Rule* targ
     auto side = [](const rewrite::Rule& r, const hom::ACSetMorphism& match,
                    const hom::ACSetMorphism& comatch, std::vector<dot::PartClass>& before,
                    std::vector<dot::PartClass>& after) {
-        before = marks(
-            r, match, [&](ObId ob) { return r.deleted_parts(ob); }, "deleted");
-        after = marks(
-            r, comatch, [&](ObId ob) { return r.created_parts(ob); }, "created");
+        std::vector<std::vector<Part>> deleted, created;
+        for (std::uint32_t o = 0; o < r.L.schema().num_obs(); ++o) {
+            deleted.push_back(r.deleted_parts(ObId(o)));
+            created.push_back(r.created_parts(ObId(o)));
+        }
+        before = marks(r.L, match, deleted, "deleted");
+        after = marks(r.R, comatch, created, "created");
     };
     if (source_rule != nullptr) {
         side(*source_rule, step.source_match, step.source_comatch, out.source_before,
@@ -274,6 +280,54 @@ StepMarks step_marks(const rewrite::Rule* source_rule, const rewrite::Rule* targ
     if (target_rule != nullptr && step.kind == transfer::StepTransfer::Kind::Generated) {
         side(*target_rule, step.target_match, step.target_comatch, out.target_before,
              out.target_after);
+    }
+    return out;
+}
+
+std::vector<UniformValues> uniform_values(const ACSet& x) {
+    std::vector<UniformValues> out;
+    const Schema& s = x.schema();
+    for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
+        ObId ob(o);
+        const auto attrs = s.attrs_from(ob);
+        if (x.num_parts(ob) == 0 || attrs.empty()) {
+            continue;
+        }
+        UniformValues u{ob, {}};
+        for (AttrId a : attrs) {
+            const auto& first = x.subpart(a, 0);
+            bool same = !first.is_unset() && !first.is_var();
+            for (Part p = 1; same && p < x.num_parts(ob); ++p) {
+                same = x.subpart(a, p) == first;
+            }
+            if (!same) {
+                break;
+            }
+            u.values.push_back(
+                fmt::format("{} = {}", s.attr(a).name, x.value_label(s.attr(a).codom, first)));
+        }
+        if (u.values.size() == attrs.size()) {
+            out.push_back(std::move(u));
+        }
+    }
+    return out;
+}
+
+std::vector<dot::PartLabel> readable_labels(const ACSet& x) {
+    std::vector<dot::PartLabel> out;
+    const Schema& s = x.schema();
+    for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
+        ObId ob(o);
+        for (Part p = 0; p < x.num_parts(ob); ++p) {
+            auto words = transfer::part_words(x, ob, p);
+            if (transfer::is_user_name(words.front())) {
+                continue;
+            }
+            std::string label = words.size() > 1 ? words.front() : "a " + s.ob(ob).name;
+            if (label != x.part_label(ob, p)) {
+                out.push_back({ob, p, std::move(label)});
+            }
+        }
     }
     return out;
 }

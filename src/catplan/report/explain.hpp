@@ -53,16 +53,33 @@ std::vector<std::string> binding_reasons(const migrate::SchemaMap& f,
                                          const transfer::StepTransfer& step, const acset::ACSet& x,
                                          const acset::ACSet& y);
 
-/// What a step deletes and creates, as parts of the pictures of its states (CSS classes
-/// "deleted" and "created").
+/// What a step deletes, creates and keeps of what its match binds, as parts of the pictures of
+/// its states (CSS classes "deleted", "created" and "matched").
 struct StepMarks {
     std::vector<dot::PartClass> source_before, source_after, target_before, target_after;
 };
 
-/// The parts of L outside l(K) through the match (in the state before) and of R outside r(K)
-/// through the comatch (in the state after), on each side; a side whose rule is null, or the
-/// target side of a step not carried out by its generated action, is left unmarked.
+/// The parts of L outside l(K) through the match (in the state before, "deleted") and of R
+/// outside r(K) through the comatch (in the state after, "created"), and the kept parts through
+/// both ("matched"), on each side; a side whose rule is null, or the target side of a step not
+/// carried out by its generated action, is left unmarked.
 StepMarks step_marks(const rewrite::Rule* source_rule, const rewrite::Rule* target_rule,
                      const transfer::StepTransfer& step);
+
+/// An object of a state whose parts all have the same attribute values (the constants a map
+/// gives, `breadSlicedHasMass = 0.0`), said once instead of on every part.
+struct UniformValues {
+    ObId ob;
+    std::vector<std::string> values; // `hasMass = 0.0`, in schema order
+};
+
+/// The objects of x with parts and attributes whose every attribute has one and the same
+/// concrete value on all its parts.
+std::vector<UniformValues> uniform_values(const acset::ACSet& x);
+
+/// Labels for the parts of x whose only word is a label or a name catplan made up (`block@4`):
+/// their term when another part reaches them (`isEmpty(empty)`), else their object (`a
+/// Receptacle`), so that a picture shows no made-up name.
+std::vector<dot::PartLabel> readable_labels(const acset::ACSet& x);
 
 } // namespace catplan::report

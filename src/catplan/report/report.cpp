@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cctype>
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <set>
 #include <vector>
 
@@ -49,10 +50,13 @@ ul.reasons { margin: 0.3em 0 0 0; padding-left: 1.2em; font-size: 0.85em; color:
 .deleted polygon, .deleted path, .deleted ellipse { stroke: #c0392b; stroke-width: 3px;
                                                     stroke-dasharray: 6 3; }
 .created polygon, .created path, .created ellipse { stroke: #1e8a3a; stroke-width: 3px; }
+.matched polygon, .matched path, .matched ellipse { stroke: #1f5fbf; stroke-width: 3px; }
 .legend { font-size: 0.85em; color: #444; }
+p.values { font-size: 0.8em; color: #555; margin: 0.2em 0 0 0; }
 .swatch { display: inline-block; width: 1.4em; height: 0.8em; vertical-align: middle;
           border-radius: 3px; margin-left: 0.6em; }
 .swatch.deleted { border: 3px dashed #c0392b; }
+.swatch.matched { border: 3px solid #1f5fbf; }
 .swatch.created { border: 3px solid #1e8a3a; }
 .note { color: #8a5a00; font-size: 0.9em; }
 .failed { color: #8a1f1f; font-weight: bold; }
@@ -74,7 +78,7 @@ class Pictures {
 public:
     /// A <figure> with the picture of `dot` and a caption.
     std::string figure(const std::string& dot, std::string_view caption,
-                       std::string_view css_class = {}) {
+                       std::string_view css_class = {}, std::string_view note = {}) {
         std::string body;
         auto it = std::find_if(cache_.begin(), cache_.end(),
                                [&](const auto& e) { return e.first == dot; });
@@ -90,6 +94,9 @@ public:
             body = "<p class=\"error\">(no picture: Graphviz failed)</p>";
         } else {
             body = inline_svg(it->second, fmt::format("p{}", ++count_));
+        }
+        if (!note.empty()) {
+            body += fmt::format("<p class=\"values\">{}</p>", escape_html(note));
         }
         return fmt::format("<figure{}><figcaption>{}</figcaption>{}</figure>\n",
                            css_class.empty() ? "" : fmt::format(" class=\"{}\"", css_class),
@@ -206,11 +213,12 @@ std::string ontology_section(const ReportInput& in, Pictures& pictures) {
     o += pictures.figure(dot::schema_to_dot(*f.target(), lr),
                          fmt::format("target ontology {}", f.target()->name()));
     o += "</div>\n";
-    o += pictures.figure(dot::map_to_dot(f, in.map_name, in.dot),
-                         fmt::format("the map {}: dashed edges go from each target object to its "
-                                     "image, through a query box for a conjunctive image",
-                                     in.map_name),
-                         "wide");
+    o += pictures.figure(
+        dot::map_to_dot(f, in.map_name, in.dot),
+        fmt::format("the map {}: dashed blue edges go from each target object to its "
+                    "image, through a query box for a conjunctive image",
+                    in.map_name),
+        "wide");
     o += "<details><summary>The map in words (one line per target generator)</summary>\n"
          "<table><tr><th>target generator</th><th>image</th></tr>\n";
     for (const auto& line : migrate::describe_map(f)) {
@@ -278,22 +286,42 @@ std::pair<const rewrite::Rule*, const rewrite::Rule*> rules_of(const ReportInput
             t.target_domain.domain ? t.target_domain.domain->find_rule(action) : nullptr};
 }
 
+/// A state's picture: parts called by readable labels, and the attribute values that every part
+/// of an object shares said once under it rather than on each part, so the picture stays
+/// legible at the page's width.
+std::string state_figure(const ReportInput& in, Pictures& pictures, const acset::ACSet& x,
+                         std::string_view name, std::string_view caption,
+                         const std::vector<dot::PartClass>& classes = {}) {
+    dot::DotOptions options = in.dot;
+    std::vector<std::string> notes;
+    for (const auto& u : uniform_values(x)) {
+        const std::string& ob = x.schema().ob(u.ob).name;
+        options.attributes_hidden.push_back(ob);
+        notes.push_back(fmt::format("{} {}: {}", x.num_parts(u.ob) == 1 ? "the" : "every", ob,
+                                    fmt::join(u.values, ", ")));
+    }
+    std::string note =
+        notes.empty() ? std::string() : fmt::format("Not drawn: {}.", fmt::join(notes, "; "));
+    return pictures.figure(dot::state_to_dot(x, name, options, classes, readable_labels(x)),
+                           caption, {}, note);
+}
+
 std::string states_details(const ReportInput& in, std::size_t i, Pictures& pictures) {
     const TransferResult& t = *in.transfer;
     if (t.source_states.size() <= i + 1 || t.target_states.size() <= i + 1) {
         return {};
     }
-    std::string o = fmt::format(
-        "<details><summary>States before and after step {}</summary>\n<div class=\"grid\">\n",
-        i + 1);
-    o += "<p class=\"legend\"><span class=\"swatch deleted\"></span> deleted by the step (in "
-         "the state before) <span class=\"swatch created\"></span> created by the step (in the "
-         "state after)</p>\n";
+    std::string o =
+        fmt::format("<details><summary>States before and after step {}</summary>\n", i + 1);
+    o += "<p class=\"legend\"><span class=\"swatch matched\"></span> bound by the match and "
+         "kept <span class=\"swatch deleted\"></span> deleted by the step (in the state before) "
+         "<span class=\"swatch created\"></span> created by the step (in the state after)</p>\n"
+         "<div class=\"grid\">\n";
     auto [source_rule, target_rule] = rules_of(in, i);
     StepMarks marks = step_marks(source_rule, target_rule, t.steps[i]);
     auto state = [&](const acset::ACSet& x, const std::string& name, const std::string& caption,
                      const std::vector<dot::PartClass>& classes) {
-        return pictures.figure(dot::state_to_dot(x, name, in.dot, classes), caption);
+        return state_figure(in, pictures, x, name, caption, classes);
     };
     o += state(t.source_states[i], fmt::format("X{}", i), fmt::format("source before: X{}", i),
                marks.source_before);
@@ -409,14 +437,14 @@ std::string problem_section(const ReportInput& in, Pictures& pictures) {
     std::string o = "<h2>The problem on both sides</h2>\n<details><summary>Initial states and "
                     "goals (source I and G, target Y0 = Δ<sub>F</sub>(I) and "
                     "Δ<sub>F</sub>(G))</summary>\n<div class=\"grid\">\n";
-    o += pictures.figure(dot::state_to_dot(*in.problem->initial, "I", in.dot),
-                         "source initial state I");
-    o += t.target_initial ? pictures.figure(dot::state_to_dot(*t.target_initial, "Y0", in.dot),
-                                            "target initial state Y0")
+    auto state = [&](const acset::ACSet& x, std::string_view name, std::string_view caption) {
+        return state_figure(in, pictures, x, name, caption);
+    };
+    o += state(*in.problem->initial, "I", "source initial state I");
+    o += t.target_initial ? state(*t.target_initial, "Y0", "target initial state Y0")
                           : "<p class=\"muted\">(no target initial state)</p>";
-    o += pictures.figure(dot::state_to_dot(*in.problem->goal, "G", in.dot), "source goal G");
-    o += t.target_goal ? pictures.figure(dot::state_to_dot(*t.target_goal, "goal", in.dot),
-                                         "target goal Δ_F(G)")
+    o += state(*in.problem->goal, "G", "source goal G");
+    o += t.target_goal ? state(*t.target_goal, "goal", "target goal Δ_F(G)")
                        : "<p class=\"muted\">(no target goal)</p>";
     return o + "</div></details>\n";
 }

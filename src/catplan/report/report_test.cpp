@@ -328,8 +328,14 @@ TEST(Explain, StatePicturesMarkWhatTheStepDeletesAndCreates) {
     const auto& st = m.t.steps[0]; // move(A, B, C): deletes On A B, creates On A C
     const auto* rule = m.fx.problem->domain->find_rule("move");
     StepMarks marks = step_marks(rule, m.t.target_domain.domain->find_rule("move"), st);
-    ASSERT_EQ(marks.source_after.size(), 1U);
-    const auto& created = marks.source_after[0];
+    auto of_class = [](const std::vector<dot::PartClass>& all, std::string_view css) {
+        std::vector<dot::PartClass> out;
+        std::copy_if(all.begin(), all.end(), std::back_inserter(out),
+                     [&](const dot::PartClass& c) { return c.css_class == css; });
+        return out;
+    };
+    ASSERT_EQ(of_class(marks.source_after, "created").size(), 1U);
+    const auto created = of_class(marks.source_after, "created")[0];
     EXPECT_EQ(created.ob, m.fx.t.on);
     EXPECT_EQ(created.css_class, "created");
     const ACSet& after = m.t.source_states[1];
@@ -346,14 +352,67 @@ TEST(Explain, StatePicturesMarkWhatTheStepDeletesAndCreates) {
         << picture;
     // The deleted On is marked in the state before, on both sides, and the target's created
     // InReceptacle in the target's state after.
-    ASSERT_EQ(marks.source_before.size(), 1U);
-    EXPECT_EQ(marks.source_before[0].css_class, "deleted");
+    ASSERT_EQ(of_class(marks.source_before, "deleted").size(), 1U);
+    EXPECT_EQ(of_class(marks.source_before, "deleted")[0].ob, m.fx.t.on);
+    // The blocks the match binds are kept: marked as matched before and after, and nothing else.
+    const ACSet& before = m.t.source_states[0];
+    std::set<std::string> matched;
+    for (const auto& c : of_class(marks.source_before, "matched")) {
+        EXPECT_EQ(c.ob, m.fx.t.block);
+        matched.insert(std::string(before.part_name(c.ob, c.part)));
+    }
+    EXPECT_EQ(matched, (std::set<std::string>{"A", "B", "C"}));
+    EXPECT_EQ(of_class(marks.source_after, "matched").size(), 3U);
+    EXPECT_EQ(marks.source_before.size(), 4U);
     EXPECT_FALSE(marks.target_before.empty());
     EXPECT_FALSE(marks.target_after.empty());
     // On the page, as SVG classes (On is drawn as an edge there), with a legend.
     EXPECT_GE(count(m.html, "class=\"edge created\""), 2 * m.t.steps.size());
     EXPECT_GE(count(m.html, "class=\"edge deleted\""), 2 * m.t.steps.size());
     EXPECT_TRUE(contains(m.html, "<span class=\"swatch created\">"));
+    EXPECT_TRUE(contains(m.html, "<span class=\"swatch matched\">"));
+    EXPECT_GE(count(m.html, "class=\"node matched\""), 2 * m.t.steps.size());
+}
+
+TEST(Explain, ValuesEveryPartSharesAreSaidOnce) {
+    Stacks t = stacks(/*clear=*/true);
+    ACSet x(t.s);
+    AttrId clear = *t.s->find_attr("isClear");
+    for (const char* n : {"A", "B"}) {
+        Part p = x.add_part(t.block, n);
+        x.set_subpart(clear, p, Value::boolean(true));
+        x.set_subpart(t.color, p, Value::string("red"));
+    }
+    auto u = uniform_values(x);
+    ASSERT_EQ(u.size(), 1U);
+    EXPECT_EQ(u[0].ob, t.block);
+    EXPECT_EQ(u[0].values, (std::vector<std::string>{"hasColor = \"red\"", "isClear = true"}));
+    x.set_subpart(t.color, 1, Value::string("blue"));
+    EXPECT_TRUE(uniform_values(x).empty()); // one attribute differs: every row is drawn
+}
+
+TEST(Explain, MadeUpNamesAreNotShown) {
+    Stacks t = stacks();
+    ACSet x(t.s);
+    Part a = x.add_part(t.block, "A");
+    Part made = x.add_part(t.block, "block@2"); // a block a step created
+    Part below = x.add_part(t.block, "");       // an unnamed part: its label is #3
+    Part on = x.add_part(t.on, "on1");
+    x.set_subpart(t.on_l, on, a);
+    x.set_subpart(t.on_r, on, below);
+    (void)made;
+    auto labels = readable_labels(x);
+    auto label_of = [&](Part p) -> std::string {
+        for (const auto& l : labels) {
+            if (l.ob == t.block && l.part == p) {
+                return l.label;
+            }
+        }
+        return "(none)";
+    };
+    EXPECT_EQ(label_of(a), "(none)");        // a person's name stays
+    EXPECT_EQ(label_of(made), "a Block");    // nothing reaches it: its object
+    EXPECT_EQ(label_of(below), "on_r(on1)"); // reached by a hom from a named part
 }
 
 TEST(Report, SvgIdsAreUniqueOnThePage) {

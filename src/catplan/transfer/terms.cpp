@@ -60,6 +60,11 @@ std::vector<std::string> part_words(const acset::ACSet& x, ObId ob, Part p) {
     return words;
 }
 
+bool has_readable_word(const acset::ACSet& x, ObId ob, Part p) {
+    auto words = part_words(x, ob, p);
+    return words.size() > 1 || is_user_name(words.front());
+}
+
 std::string part_word(const acset::ACSet& x, ObId ob, Part p) {
     if (p == kNoPart) {
         return "_";

@@ -35,6 +35,10 @@ std::optional<std::string> tuple_term(const acset::ACSet& x, ObId ob, Part p);
 /// empty).
 std::vector<std::string> part_words(const acset::ACSet& x, ObId ob, Part p);
 
+/// Whether part p of ob has a word a person can read: a name a person wrote or a term, not only
+/// its label or a name catplan made up (`block@2`).
+bool has_readable_word(const acset::ACSet& x, ObId ob, Part p);
+
 /// The first of part_words (`_` for kNoPart).
 std::string part_word(const acset::ACSet& x, ObId ob, Part p);
 

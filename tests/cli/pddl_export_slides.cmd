@@ -1,0 +1,1 @@
+pddl export examples/colorblocksworld/slides.cp --problem SlidesCaseStudy
