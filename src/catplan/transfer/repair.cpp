@@ -25,28 +25,6 @@ void add_stats(plan::SearchStats& into, const plan::SearchStats& s) {
     into.plans += s.plans;
 }
 
-// The match of a step in x: its arguments bound to the parts of those names (through the index),
-// completed uniquely; plan::resolve_step, which explains a failure, otherwise.
-Result<ACSetMorphism> bound_match(const rewrite::Rule& rule, const NamedState& x,
-                                  const plan::Step& step) {
-    rewrite::MatchOptions opt;
-    bool all_bound = step.args.size() == rule.parameters.size();
-    for (std::size_t i = 0; all_bound && i < step.args.size(); ++i) {
-        const auto& param = rule.parameters[i];
-        Part p = x.find(param.ob, step.args[i]);
-        all_bound = p != kNoPart;
-        opt.initial.push_back({param.ob, param.part, p});
-    }
-    if (all_bound) {
-        opt.max_results = 2;
-        auto matches = rewrite::find_matches(rule, x.state(), opt);
-        if (matches.size() == 1) {
-            return std::move(matches[0]);
-        }
-    }
-    return plan::resolve_step(rule, x.state(), step);
-}
-
 // Whether goal embeds monically in x (any morphism; no reason is looked for when none does).
 bool embeds(const ACSet& goal, const ACSet& x) {
     hom::HomSearchOptions opt;
@@ -69,7 +47,7 @@ Result<std::vector<ACSetMorphism>> replay(const plan::Domain& target, const Name
         if (rule == nullptr) {
             return fail(fmt::format("no action {} in the target", step.action));
         }
-        auto m = bound_match(*rule, z, step);
+        auto m = match_by_names(*rule, z, step);
         if (!m) {
             return fail(m.error());
         }

@@ -160,30 +160,6 @@ std::string explain_no_match(const rewrite::Rule& rule, const ACSet& y,
                        missing ? *missing : std::string("the precondition does not embed"));
 }
 
-// The source match of a step: its arguments bound by name through the index, completed
-// uniquely; plan::resolve_step explains any failure.
-Result<ACSetMorphism> source_match(const rewrite::Rule& rule, const NamedState& x,
-                                   const plan::Step& step) {
-    std::vector<hom::PartBinding> bindings;
-    bool all_bound = step.args.size() == rule.parameters.size();
-    for (std::size_t i = 0; all_bound && i < step.args.size(); ++i) {
-        const auto& param = rule.parameters[i];
-        Part p = x.find(param.ob, step.args[i]);
-        all_bound = p != kNoPart;
-        bindings.push_back({param.ob, param.part, p});
-    }
-    if (all_bound) {
-        rewrite::MatchOptions opt;
-        opt.initial = bindings;
-        opt.max_results = 2;
-        auto matches = rewrite::find_matches(rule, x.state(), opt);
-        if (matches.size() == 1) {
-            return std::move(matches[0]);
-        }
-    }
-    return plan::resolve_step(rule, x.state(), step);
-}
-
 class Transfer {
 public:
     Transfer(const SchemaMap& f, const plan::Problem& problem, const plan::Plan& plan,
@@ -273,7 +249,7 @@ private:
                 i, fmt::format("no action '{}' in domain {}", s.action, problem_.domain->name));
             return false;
         }
-        auto m = source_match(*a->source, *x_, s);
+        auto m = match_by_names(*a->source, *x_, s);
         if (!m) {
             source_failure(i, m.error());
             return false;
