@@ -23,7 +23,8 @@ thread_local bool handling = false; // a note that cannot allocate must not call
 
 void install_out_of_memory_handler(std::size_t reserve_bytes) {
     reserve().reset(); // first, so that renewing does not hold two reserves at once
-    reserve() = std::make_unique<char[]>(reserve_bytes);
+    // Not zeroed: the pages are never touched, so the reserve costs nothing at start-up.
+    reserve() = std::make_unique_for_overwrite<char[]>(reserve_bytes);
     std::set_new_handler(&handle_out_of_memory);
 }
 

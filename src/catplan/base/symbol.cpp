@@ -18,9 +18,12 @@ constexpr std::uint32_t kChunkBits = 12;
 constexpr std::uint32_t kChunk = 1u << kChunkBits;
 constexpr std::uint32_t kMaxChunks = 1u << 20;
 
+// The chunk pointers (8 MB) are zero-initialized static storage, so that only the pages of the
+// chunks in use are ever touched: zeroing them when the table is made cost every process start.
+constinit std::array<std::atomic<std::string*>, kMaxChunks> chunk_table{};
+
 struct SymbolTable {
     std::mutex mutex;
-    std::array<std::atomic<std::string*>, kMaxChunks> chunks{};
     std::uint32_t size = 0;
     std::unordered_map<std::string_view, std::uint32_t> ids;
 
@@ -30,10 +33,10 @@ struct SymbolTable {
         std::uint32_t id = size;
         std::uint32_t c = id >> kChunkBits;
         CATPLAN_ASSERT(c < kMaxChunks, "the symbol table is full");
-        std::string* chunk = chunks[c].load(std::memory_order_relaxed);
+        std::string* chunk = chunk_table[c].load(std::memory_order_relaxed);
         if (chunk == nullptr) {
             chunk = new std::string[kChunk]; // owned by the table for the life of the process
-            chunks[c].store(chunk, std::memory_order_release);
+            chunk_table[c].store(chunk, std::memory_order_release);
         }
         chunk[id & (kChunk - 1)] = std::string(text);
         ids.emplace(chunk[id & (kChunk - 1)], id);
@@ -62,7 +65,7 @@ std::string_view Symbol::str() const {
     if (id_ == 0) {
         return {};
     }
-    const std::string* chunk = table().chunks[id_ >> kChunkBits].load(std::memory_order_acquire);
+    const std::string* chunk = chunk_table[id_ >> kChunkBits].load(std::memory_order_acquire);
     return chunk[id_ & (kChunk - 1)];
 }
 

@@ -51,9 +51,9 @@ void for_each_tuple(const Query& q, const ACSet& x, ObId ob, Part shape, Part p,
 
 // What a part of a target state states, with its hom values by the names of their targets:
 // "name|target name of each hom|each attribute value".
-std::string target_record(const ACSet& y, ObId c, Part q) {
+std::string target_record(const ACSet& y, ObId c, Part q, bool with_name = true) {
     const auto& s = y.schema();
-    std::string out(y.part_name(c, q));
+    std::string out(with_name ? y.part_name(c, q) : std::string_view());
     for (HomId f : s.homs_from(c)) {
         Part r = y.subpart(f, q);
         out += '|';
@@ -98,25 +98,30 @@ std::vector<std::string> only_in(const std::vector<std::string>& a,
 
 // Whether every part of a and b has a name no other part of its object has, and the parts of
 // each object state the same records: then "same name" is an isomorphism b -> a (up to which
-// cells share an unknown).
-bool same_by_names(const ACSet& a, const ACSet& b) {
-    for (std::uint32_t o = 0; o < a.schema().num_obs(); ++o) {
+// cells share an unknown). With facts_by_content, a part of an object nothing points into (a
+// fact) is compared by its values alone, its name left out: then "same name" on the other parts
+// and "same values" on the facts is an isomorphism (equal facts are interchangeable, since no
+// part refers to them), though not one by names.
+bool same_by_names(const ACSet& a, const ACSet& b, bool facts_by_content = false) {
+    const auto& s = a.schema();
+    for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
         ObId c(o);
         if (a.num_parts(c) != b.num_parts(c)) {
             return false;
         }
+        bool by_content = facts_by_content && s.homs_into(c).empty();
         std::vector<std::string> ra, rb;
         std::vector<std::string_view> na, nb;
         for (Part p = 0; p < a.num_parts(c); ++p) {
-            ra.push_back(target_record(a, c, p));
-            rb.push_back(target_record(b, c, p));
+            ra.push_back(target_record(a, c, p, !by_content));
+            rb.push_back(target_record(b, c, p, !by_content));
             na.push_back(a.part_name(c, p));
             nb.push_back(b.part_name(c, p));
         }
         for (auto* names : {&na, &nb}) {
             std::sort(names->begin(), names->end());
-            if (std::adjacent_find(names->begin(), names->end()) != names->end() ||
-                (!names->empty() && names->front().empty())) {
+            if (!by_content && (std::adjacent_find(names->begin(), names->end()) != names->end() ||
+                                (!names->empty() && names->front().empty()))) {
                 return false;
             }
         }
@@ -324,12 +329,38 @@ std::optional<Divergence> DivergenceCheck::after(std::size_t step, const ACSetMo
 
 std::optional<Divergence> DivergenceCheck::compare_whole(std::size_t step, const NamedState& xn,
                                                          const NamedState& yn) {
-    ++whole_;
     ACSet z = migrate::migrate(f_, xn.state());
     rename_parts(z, renaming_);
-    const ACSet& y = yn.state();
+    return compare_states(step, z, yn.state());
+}
+
+std::optional<Divergence> DivergenceCheck::compare_repaired(std::size_t step, const ACSet& z,
+                                                            const NamedState& y,
+                                                            bool holds_by_names) {
+    keys_.clear();
+    const ACSet& ys = y.state();
+    bool bijective = holds_by_names;
+    const auto& s = ys.schema();
+    for (std::uint32_t o = 0; bijective && o < s.num_obs(); ++o) {
+        bijective = z.num_parts(ObId(o)) == ys.num_parts(ObId(o));
+    }
+    for (std::uint32_t t = 0; bijective && t < s.num_attr_types(); ++t) {
+        bijective = z.num_vars(AttrTypeId(t)) == 0 && ys.num_vars(AttrTypeId(t)) == 0;
+    }
+    if (!bijective) {
+        return compare_states(step, z, ys);
+    }
+    ++whole_;
+    local_ = false; // isomorphic, but not by names (a repair names what it creates its own way)
+    return std::nullopt;
+}
+
+std::optional<Divergence> DivergenceCheck::compare_states(std::size_t step, const ACSet& z,
+                                                          const ACSet& y) {
+    ++whole_;
     local_ = same_by_names(z, y);
-    if (local_ || (hom::canonical_hash(z) == hom::canonical_hash(y) && hom::is_isomorphic(z, y))) {
+    if (local_ || same_by_names(z, y, true) ||
+        (hom::canonical_hash(z) == hom::canonical_hash(y) && hom::is_isomorphic(z, y))) {
         return std::nullopt;
     }
     Divergence d;

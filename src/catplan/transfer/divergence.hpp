@@ -62,6 +62,14 @@ public:
         return compare_whole(step, x, y);
     }
 
+    /// Compares Y_i with z = Δ_F(X_i) (renamed) after a repair; with `holds_by_names`, the repair
+    /// checked that z embeds in Y_i sending each part that homs point into to its namesake, and
+    /// then, when both have as many parts of each object and no attribute variable, that
+    /// embedding is an isomorphism (monic and as many parts: bijective; a bijective morphism of
+    /// C-sets is invertible) and nothing more is compared.
+    std::optional<Divergence> compare_repaired(std::size_t step, const acset::ACSet& z,
+                                               const NamedState& y, bool holds_by_names);
+
     /// Y is Δ_F(X) with the same names (after Y := Δ_F(X)): the local check is exact again.
     void reset() { local_ = true; }
 
@@ -94,6 +102,8 @@ private:
     std::optional<bool> agree(const Key& key, const NamedState& x, const NamedState& y) const;
     std::optional<Divergence> compare_whole(std::size_t step, const NamedState& x,
                                             const NamedState& y);
+    std::optional<Divergence> compare_states(std::size_t step, const acset::ACSet& z,
+                                             const acset::ACSet& y);
     std::string source_name(const acset::ACSet& x, ObId ob, Part p) const;
 
     const migrate::SchemaMap& f_;

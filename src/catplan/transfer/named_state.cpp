@@ -1,5 +1,6 @@
 #include "catplan/transfer/named_state.hpp"
 
+#include "catplan/plan/validate.hpp"
 #include "catplan/rewrite/dpo.hpp"
 
 #include <algorithm>
@@ -145,6 +146,26 @@ void NamedState::name_created(const rewrite::Rule& rule, const hom::ACSetMorphis
             add(ObId(o), p);
         }
     }
+}
+
+Result<hom::ACSetMorphism> match_by_names(const rewrite::Rule& rule, const NamedState& x,
+                                          const plan::Step& step) {
+    rewrite::MatchOptions opt;
+    bool all_bound = step.args.size() == rule.parameters.size();
+    for (std::size_t i = 0; all_bound && i < step.args.size(); ++i) {
+        const auto& param = rule.parameters[i];
+        Part p = x.find(param.ob, step.args[i]);
+        all_bound = p != kNoPart;
+        opt.initial.push_back({param.ob, param.part, p});
+    }
+    if (all_bound) {
+        opt.max_results = 2;
+        auto matches = rewrite::find_matches(rule, x.state(), opt);
+        if (matches.size() == 1) {
+            return std::move(matches[0]);
+        }
+    }
+    return plan::resolve_step(rule, x.state(), step);
 }
 
 } // namespace catplan::transfer

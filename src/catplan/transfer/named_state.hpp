@@ -9,6 +9,7 @@
 #include "catplan/acset/acset.hpp"
 #include "catplan/base/result.hpp"
 #include "catplan/hom/morphism.hpp"
+#include "catplan/plan/domain.hpp"
 #include "catplan/rewrite/rule.hpp"
 
 #include <functional>
@@ -73,5 +74,10 @@ private:
     /// Per object: for each base fresh_name had to suffix, the smallest suffix that may be free.
     std::vector<std::map<std::string, std::uint64_t, std::less<>>> suffix_hints_;
 };
+
+/// The match of a step in x: its arguments bound to the parts of those names (through the index),
+/// completed uniquely; else plan::resolve_step's, which says why there is none.
+Result<hom::ACSetMorphism> match_by_names(const rewrite::Rule& rule, const NamedState& x,
+                                          const plan::Step& step);
 
 } // namespace catplan::transfer

@@ -1,35 +1,225 @@
 #include "catplan/transfer/repair.hpp"
 
+#include "catplan/hom/hom_search.hpp"
 #include "catplan/plan/validate.hpp"
+#include "catplan/rewrite/dpo.hpp"
+#include "catplan/transfer/focus.hpp"
 
 #include <fmt/format.h>
 
 namespace catplan::transfer {
+namespace {
 
-Repair repair_step(const plan::DomainPtr& target, const acset::ACSet& y,
-                   const acset::ACSet& subgoal, const RepairOptions& options) {
+using acset::ACSet;
+using hom::ACSetMorphism;
+
+void add_stats(plan::SearchStats& into, const plan::SearchStats& s) {
+    into.expanded += s.expanded;
+    into.evaluated += s.evaluated;
+    into.generated += s.generated;
+    into.duplicates += s.duplicates;
+    into.states += s.states;
+    into.seconds += s.seconds;
+    into.setup_seconds += s.setup_seconds;
+    into.ground_seconds += s.ground_seconds;
+    into.plans += s.plans;
+}
+
+// Whether goal embeds monically in x (any morphism; no reason is looked for when none does).
+bool embeds(const ACSet& goal, const ACSet& x) {
+    hom::HomSearchOptions opt;
+    opt.monic_all = true;
+    opt.max_results = 1;
+    return hom::is_homomorphic(goal, x, opt);
+}
+
+// The steps replayed as DPO steps on a copy of y, each match bound by names (through the index
+// of names), and the subgoal checked to embed in the result, by names, or (unless `by_names`)
+// by any monic morphism: each step's match, or why the steps do not reach the subgoal. `named`
+// says which embedding was found.
+Result<std::vector<ACSetMorphism>> replay(const plan::Domain& target, const NamedState& y,
+                                          const std::vector<plan::Step>& steps,
+                                          const ACSet& subgoal, bool by_names, bool& named) {
+    NamedState z = y;
+    std::vector<ACSetMorphism> matches;
+    for (const auto& step : steps) {
+        const auto* rule = target.find_rule(step.action);
+        if (rule == nullptr) {
+            return fail(fmt::format("no action {} in the target", step.action));
+        }
+        auto m = match_by_names(*rule, z, step);
+        if (!m) {
+            return fail(m.error());
+        }
+        auto applied =
+            z.apply(*rule, *m, [&](ObId ob, Part) { return z.fresh_name(ob, "repair"); });
+        if (!applied) {
+            return fail(applied.error());
+        }
+        matches.push_back(std::move(*m));
+    }
+    named = embeds_by_names(z, subgoal);
+    if (!named && (by_names || !embeds(subgoal, z.state()))) {
+        return fail("the subgoal does not embed in the state the steps reach");
+    }
+    return matches;
+}
+
+// Whether every argument of the steps names a part of `initial`: a step of a focused plan that
+// binds a part the plan created names it by its place in the focus, which the whole state does
+// not share.
+bool binds_initial_parts(const plan::Domain& target, const ACSet& initial,
+                         const std::vector<plan::Step>& steps) {
+    for (const auto& step : steps) {
+        const auto* rule = target.find_rule(step.action);
+        if (rule == nullptr || step.args.size() != rule->parameters.size()) {
+            return false;
+        }
+        for (std::size_t i = 0; i < step.args.size(); ++i) {
+            if (!initial.find_part(rule->parameters[i].ob, step.args[i])) {
+                return false;
+            }
+        }
+    }
+    return true;
+}
+
+} // namespace
+
+Repairer::Repairer(plan::DomainPtr target, RepairOptions options)
+    : target_(std::move(target)), options_(std::move(options)) {}
+
+Repair Repairer::repair(const NamedState& y, const ACSet& subgoal) {
     Repair out;
-    if (plan::embed_goal(subgoal, y)) {
+    if (embeds_by_names(y, subgoal)) {
         out.found = true;
+        out.by_names = true;
         return out;
     }
-    plan::Problem p;
-    p.name = "repair";
-    p.domain = target;
-    p.initial = std::make_shared<const acset::ACSet>(y);
-    p.goal = std::make_shared<const acset::ACSet>(subgoal);
-    auto r = plan::find_plan(p, options.search);
-    out.stats = r.stats;
-    if (r.status == plan::SearchStatus::Solved) {
+    if (focus_repair(y, subgoal, out)) {
+        return out;
+    }
+    if (embeds(subgoal, y.state())) {
+        out.found = true; // by another morphism than the names'
+        return out;
+    }
+    whole_repair(y, subgoal, out);
+    return out;
+}
+
+// A focused problem's goal is reached by names (a focus may be too small to tell its parts apart
+// otherwise): its ground task, compiled for it, is searched with the goal written by names; where
+// the grounded search does not apply, the planner's own search (any monic morphism), which the
+// replay on the whole state then checks by names.
+plan::SearchResult Repairer::search_by_names(const plan::ProblemPtr& p,
+                                             const plan::SearchOptions& options) const {
+    if (options.ground) {
+        auto task = plan::ground::ReusableTask::compile(p, options);
+        if (task) {
+            auto r = task->search(p->initial, p->goal, options);
+            if (r) {
+                r->stats.ground_seconds += task->compile_seconds();
+                return std::move(*r);
+            }
+        }
+    }
+    return plan::find_plan(*p, options);
+}
+
+bool Repairer::focus_repair(const NamedState& y, const ACSet& subgoal, Repair& out) {
+    auto focus = Focus::of(y, subgoal);
+    if (!focus || focus->seeds() == 0) {
+        return false;
+    }
+    std::size_t searched = 0; // the parts of the last focus searched (a larger radius adds some)
+    plan::SearchOptions options = options_.search;
+    if (options.max_nodes == 0 || options.max_nodes > options_.focus_max_nodes) {
+        options.max_nodes = options_.focus_max_nodes;
+    }
+    for (std::size_t radius : options_.radii) {
+        auto fp = focus->problem(radius);
+        if (fp.whole) {
+            return false; // the whole state is searched next
+        }
+        if (fp.parts == searched) {
+            continue;
+        }
+        searched = fp.parts;
+        auto p = std::make_shared<plan::Problem>();
+        p->name = "repair";
+        p->domain = target_;
+        p->initial = std::make_shared<const ACSet>(std::move(fp.initial));
+        p->goal = std::make_shared<const ACSet>(std::move(fp.goal));
+        auto r = search_by_names(p, options);
+        add_stats(out.stats, r.stats);
+        if (r.status != plan::SearchStatus::Solved ||
+            !binds_initial_parts(*target_, *p->initial, r.plan->steps)) {
+            continue;
+        }
+        bool named = false;
+        auto matches = replay(*target_, y, r.plan->steps, subgoal, true, named);
+        if (!matches) {
+            continue;
+        }
         out.found = true;
         out.steps = std::move(r.plan->steps);
-        return out;
+        out.matches = std::move(*matches);
+        out.focus_parts = fp.parts;
+        out.by_names = true;
+        return true;
     }
-    out.why = r.status == plan::SearchStatus::Unsolvable
-                  ? std::string("no target plan reaches the migrated source state")
-                  : fmt::format("the local search stopped at its {} ({} states expanded)",
-                                plan::to_string(r.status), r.stats.expanded);
-    return out;
+    return false;
+}
+
+// The whole state: the target's ground task compiled once per transfer and searched from each
+// state (plan/ground/reuse.hpp), else a search of the repair's own problem.
+void Repairer::whole_repair(const NamedState& y, const ACSet& subgoal, Repair& out) {
+    auto initial = std::make_shared<const ACSet>(y.state());
+    auto goal = std::make_shared<const ACSet>(subgoal);
+    plan::SearchResult r;
+    bool searched = false;
+    if (options_.search.ground && !task_ && why_no_task_.empty()) {
+        auto p = std::make_shared<plan::Problem>();
+        p->name = "repair";
+        p->domain = target_;
+        p->initial = initial;
+        p->goal = goal;
+        auto task = plan::ground::ReusableTask::compile(p, options_.search);
+        if (task) {
+            task_.emplace(std::move(*task));
+        } else {
+            why_no_task_ = task.error();
+        }
+    }
+    if (task_) {
+        auto reused = task_->search(initial, goal, options_.search);
+        // Unsolvable by names is not unsolvable: the repair's own problem is searched then.
+        if (reused && !(reused->status == plan::SearchStatus::Unsolvable)) {
+            r = std::move(*reused);
+            searched = true;
+        }
+    }
+    if (!searched) {
+        plan::Problem p;
+        p.name = "repair";
+        p.domain = target_;
+        p.initial = initial;
+        p.goal = goal;
+        r = plan::find_plan(p, options_.search);
+    }
+    add_stats(out.stats, r.stats);
+    if (r.status != plan::SearchStatus::Solved) {
+        out.why = r.status == plan::SearchStatus::Unsolvable
+                      ? std::string("no target plan reaches the migrated source state")
+                      : fmt::format("the local search stopped at its {} ({} states expanded)",
+                                    plan::to_string(r.status), out.stats.expanded);
+        return;
+    }
+    auto matches = replay(*target_, y, r.plan->steps, subgoal, false, out.by_names);
+    CATPLAN_ASSERT(matches, "a plan the planner validated replays on its initial state");
+    out.found = true;
+    out.steps = std::move(r.plan->steps);
+    out.matches = std::move(*matches);
 }
 
 } // namespace catplan::transfer

@@ -7,13 +7,29 @@
 // none when Y_{i-1} already holds what Δ_F(X_i) says (the 4-operator `pick-up` seen through a map
 // that forgets the gripper).
 //
-// The local plan is found with plan::find_plan (greedy best-first with h_FF by default, within
-// node and time limits); an empty plan is tried first.
+// No step is needed when Y_{i-1} already holds the subgoal by names (focus.hpp: each part that
+// homs point into is its namesake, each fact is found by its arguments). Otherwise a repair costs
+// what the step touches, not the size of the state: the local plan is searched first on a focus
+// of Y_{i-1} (the parts near what the subgoal changes, radius 1, then 2, then 4), its goal reached
+// by names; a plan found there is replayed on the whole Y_{i-1} as DPO steps and the whole subgoal
+// is checked to hold by names in the result before it is used (one that fails, for a negative
+// condition or a dangling part the focus does not see, is set aside and the next focus tried).
+// Only when no focus gives a plan, and the subgoal does not embed in Y_{i-1} by another monic
+// morphism either, is the whole state searched: the target's ground task is compiled once per
+// transfer and searched from each state with its subgoal (plan/ground/reuse.hpp), else the
+// repair's own problem. Each search is the planner's (greedy best-first with h_FF by default,
+// within node and time limits).
 
 #include "catplan/acset/acset.hpp"
+#include "catplan/hom/morphism.hpp"
 #include "catplan/plan/domain.hpp"
+#include "catplan/plan/ground/reuse.hpp"
 #include "catplan/plan/search.hpp"
+#include "catplan/transfer/named_state.hpp"
 
+#include <cstddef>
+#include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -29,18 +45,49 @@ struct RepairOptions {
         s.max_seconds = 30;
         return s;
     }();
+    /// The radii of the focuses searched before the whole state, in order (empty: the whole
+    /// state only).
+    std::vector<std::size_t> radii = {1, 2, 4};
+    /// At most this many expansions on a focus (a focus that needs more is not local, and the
+    /// next one, or the whole state, is searched), within the search's own limit.
+    std::uint64_t focus_max_nodes = 10000;
 };
 
 /// A repair: the target steps found, or why none were.
 struct Repair {
     bool found = false;
     std::vector<plan::Step> steps; ///< arguments name parts of y by name
+    /// The match of each step in the state the steps before it lead to, from y.
+    std::vector<hom::ACSetMorphism> matches;
+    /// The statistics of the searches, summed (the focuses tried and the whole state).
     plan::SearchStats stats;
+    /// When found on a focus: how many parts of y it kept (focus.hpp); 0 on the whole state.
+    std::size_t focus_parts = 0;
+    /// The subgoal embeds in the state the steps reach sending each part that homs point into to
+    /// its namesake (else by another monic morphism).
+    bool by_names = false;
     std::string why; ///< when not found: "the subgoal is unreachable", "time limit reached"
 };
 
-/// A plan in the target domain from y to a state into which subgoal embeds monically.
-Repair repair_step(const plan::DomainPtr& target, const acset::ACSet& y,
-                   const acset::ACSet& subgoal, const RepairOptions& options = {});
+/// Repairs steps of one transfer into one target domain.
+class Repairer {
+public:
+    Repairer(plan::DomainPtr target, RepairOptions options);
+
+    /// A plan in the target domain from y to a state into which subgoal embeds monically.
+    Repair repair(const NamedState& y, const acset::ACSet& subgoal);
+
+private:
+    bool focus_repair(const NamedState& y, const acset::ACSet& subgoal, Repair& out);
+    void whole_repair(const NamedState& y, const acset::ACSet& subgoal, Repair& out);
+    plan::SearchResult search_by_names(const plan::ProblemPtr& p,
+                                       const plan::SearchOptions& options) const;
+
+    plan::DomainPtr target_;
+    RepairOptions options_;
+    /// The target's ground task, compiled at the first repair on the whole state.
+    std::optional<plan::ground::ReusableTask> task_;
+    std::string why_no_task_; ///< why it could not be compiled (then each repair compiles its own)
+};
 
 } // namespace catplan::transfer

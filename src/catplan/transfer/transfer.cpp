@@ -178,30 +178,6 @@ std::string explain_no_match(const rewrite::Rule& rule, const ACSet& y,
                        missing ? *missing : std::string("the precondition does not embed"));
 }
 
-// The source match of a step: its arguments bound by name through the index, completed
-// uniquely; plan::resolve_step explains any failure.
-Result<ACSetMorphism> source_match(const rewrite::Rule& rule, const NamedState& x,
-                                   const plan::Step& step) {
-    std::vector<hom::PartBinding> bindings;
-    bool all_bound = step.args.size() == rule.parameters.size();
-    for (std::size_t i = 0; all_bound && i < step.args.size(); ++i) {
-        const auto& param = rule.parameters[i];
-        Part p = x.find(param.ob, step.args[i]);
-        all_bound = p != kNoPart;
-        bindings.push_back({param.ob, param.part, p});
-    }
-    if (all_bound) {
-        rewrite::MatchOptions opt;
-        opt.initial = bindings;
-        opt.max_results = 2;
-        auto matches = rewrite::find_matches(rule, x.state(), opt);
-        if (matches.size() == 1) {
-            return std::move(matches[0]);
-        }
-    }
-    return plan::resolve_step(rule, x.state(), step);
-}
-
 class Transfer {
 public:
     Transfer(const SchemaMap& f, const plan::Problem& problem, const plan::Plan& plan,
@@ -293,7 +269,7 @@ private:
                 i, fmt::format("no action '{}' in domain {}", s.action, problem_.domain->name));
             return false;
         }
-        auto m = source_match(*a->source, *x_, s);
+        auto m = match_by_names(*a->source, *x_, s);
         if (!m) {
             source_failure(i, m.error());
             return false;
@@ -443,7 +419,10 @@ private:
         const auto& own = *options_.target_actions;
         ACSet subgoal = migrate::migrate(f_, x_->state());
         rename_parts(subgoal, renaming_);
-        auto repair = repair_step(own.domain, y_->state(), subgoal, options_.repair);
+        if (!repairer_) {
+            repairer_.emplace(own.domain, options_.repair);
+        }
+        auto repair = repairer_->repair(*y_, subgoal);
         if (!repair.found) {
             return fail_at(i, fmt::format("{}; repair: {}",
                                           c == nullptr ? "no target action corresponds"
@@ -451,17 +430,15 @@ private:
                                                          "match in the target",
                                           repair.why));
         }
-        for (const auto& step : repair.steps) {
-            const auto* rule = own.domain->find_rule(step.action);
-            auto mt = plan::resolve_step(*rule, y_->state(), step);
-            CATPLAN_ASSERT(mt, "a repair's step applies");
-            auto applied =
-                y_->apply(*rule, *mt, [&](ObId ob, Part) { return created_name(ob, i); });
+        for (std::size_t k = 0; k < repair.steps.size(); ++k) {
+            const auto* rule = own.domain->find_rule(repair.steps[k].action);
+            auto applied = y_->apply(*rule, repair.matches[k],
+                                     [&](ObId ob, Part) { return created_name(ob, i); });
             CATPLAN_ASSERT(applied, "a repair's step applies");
         }
         if (comparing()) {
             // The repair reaches a state that holds Δ_F(X_i); whether it is Δ_F(X_i) is checked.
-            if (auto d = check_->compare(i, *x_, *y_)) {
+            if (auto d = check_->compare_repaired(i, subgoal, *y_, repair.by_names)) {
                 d->where = where(i);
                 out_.verdict.divergences.push_back(std::move(*d));
             }
@@ -469,6 +446,7 @@ private:
         st.kind = StepTransfer::Kind::Repaired;
         st.target_steps = std::move(repair.steps);
         st.repair_stats = repair.stats;
+        st.repair_focus = repair.focus_parts;
         return true;
     }
 
@@ -539,6 +517,7 @@ private:
     Renaming renaming_;
     std::optional<NamedState> x_, y_;
     std::optional<DivergenceCheck> check_;
+    std::optional<Repairer> repairer_;
     std::map<std::string, ActionPair, std::less<>> actions_;
 };
 

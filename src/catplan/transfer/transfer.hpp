@@ -132,6 +132,9 @@ struct StepTransfer {
     std::vector<plan::Step> target_steps;
     /// For a repair, the local search's statistics.
     plan::SearchStats repair_stats;
+    /// For a repair found on a focus of the target state (focus.hpp), how many of its parts the
+    /// focus kept; 0 when found on the whole state or when no step was needed.
+    std::size_t repair_focus = 0;
 };
 
 /// Every target step of a transfer, in order (the steps repairs made included).

@@ -1,5 +1,6 @@
 #include "catplan/hom/isomorphism.hpp"
 #include "catplan/migrate/migration.hpp"
+#include "catplan/transfer/correspond.hpp"
 #include "catplan/transfer/rename.hpp"
 #include "catplan/transfer/transfer.hpp"
 
@@ -484,6 +485,81 @@ TEST(Transfer, ANegativeConditionTheMapCannotSeeBreaksTheClaim) {
     EXPECT_FALSE(c.holds());
     ASSERT_NE(c.failing(), nullptr);
     EXPECT_EQ(c.failing()->why_not, "rule paint_red has a negative application condition");
+}
+
+// The Things domain's own actions: lift(b, from) takes b off `from`; put(b, to) puts b on `to`
+// when b stands on nothing (a NAC). No Things action is a migrated move, so every step of a
+// move plan is repaired.
+plan::DomainPtr lift_and_put(const SchemaPtr& s) {
+    ObId thing(0), rel(1);
+    HomId top(0), below(1);
+    auto domain = std::make_shared<plan::Domain>();
+    domain->name = "LiftAndPut";
+    domain->schema = s;
+    for (bool lift : {true, false}) {
+        auto rule = std::make_shared<rewrite::Rule>(s);
+        rule->name = lift ? "lift" : "put";
+        for (ACSet* x : {&rule->L, &rule->K, &rule->R}) {
+            x->add_part(thing, "b");
+            x->add_part(thing, "o");
+        }
+        ACSet& with = lift ? rule->L : rule->R;
+        Part r = with.add_part(rel, "r");
+        with.set_subpart(top, r, 0);
+        with.set_subpart(below, r, 1);
+        rule->l = hom::identity(rule->K);
+        rule->r = hom::identity(rule->K);
+        rule->parameters = {{"b", thing, 0}, {lift ? "from" : "to", thing, 1}};
+        if (!lift) {
+            rewrite::ApplicationCondition nac{"NAC 1", true, rule->L, hom::identity(rule->L), {}};
+            Part u = nac.n_state.add_part(thing, "under");
+            Part on = nac.n_state.add_part(rel, "on");
+            nac.n_state.set_subpart(top, on, 0);
+            nac.n_state.set_subpart(below, on, u);
+            rule->conditions.push_back(std::move(nac));
+        }
+        EXPECT_TRUE(rewrite::check_rule(*rule).empty());
+        domain->rules.push_back(std::move(rule));
+    }
+    return domain;
+}
+
+TEST(Transfer, ARepairIsFoundOnAFocusOfTheStateOrOnTheWholeStateAlike) {
+    // move(b, from, to) becomes lift(b, from), put(b, to): put cannot come first (its NAC).
+    Fixture fx;
+    auto f = renaming_map(fx.t, false);
+    auto own = lift_and_put(f.target());
+    auto generated = migrate_domain(f, *fx.problem->domain);
+    std::vector<std::vector<std::string>> plans;
+    for (bool focus : {true, false}) {
+        SCOPED_TRACE(focus ? "on a focus" : "on the whole state");
+        TransferOptions o;
+        o.target_actions =
+            std::make_shared<TargetActions>(correspond_domain(*generated.domain, own, {}));
+        if (!focus) {
+            o.repair.radii.clear();
+        }
+        auto t = transfer_plan(f, *fx.problem, fx.plan, o);
+        EXPECT_TRUE(t.verdict.valid()) << t.verdict.reason();
+        ASSERT_EQ(t.steps.size(), 2u);
+        std::vector<std::string> steps;
+        // The first repair needs A, B and C (A is on B, and goes on C): a focus of 3 of the 4
+        // blocks; the second needs all four, so its focus is the whole state.
+        EXPECT_EQ(t.steps[0].repair_focus, focus ? 3u : 0u);
+        EXPECT_EQ(t.steps[1].repair_focus, 0u);
+        for (const auto& st : t.steps) {
+            EXPECT_EQ(st.kind, StepTransfer::Kind::Repaired);
+            EXPECT_GE(st.target_steps.size(), 2u); // a lift before the put
+            for (const auto& step : st.target_steps) {
+                steps.push_back(step.to_string());
+            }
+        }
+        // Each repair ends by putting the moved block where the source put it.
+        EXPECT_EQ(t.steps[0].target_steps.back().to_string(), "put(A, C)");
+        EXPECT_EQ(t.steps[1].target_steps.back().to_string(), "put(B, A)");
+        plans.push_back(std::move(steps));
+    }
+    EXPECT_EQ(plans[0], plans[1]);
 }
 
 TEST(Transfer, ReplanFindsAPlanAndMeasuresTheEditDistance) {

@@ -227,11 +227,17 @@ GroundOutcome ground_search(const ProblemPtr& problem, const SearchOptions& opti
         fill_stats(out.result, budget);
         return out;
     }
+    search_task(*task, options, budget, out);
+    return out;
+}
+
+void search_task(const Task& task, const SearchOptions& options, Budget& budget,
+                 GroundOutcome& out) {
     out.compiled = true;
     auto& r = out.result;
-    r.stats.variables = task->vars.size();
-    r.stats.actions = task->actions.size();
-    Runner runner(*task, options, budget, r);
+    r.stats.variables = task.vars.size();
+    r.stats.actions = task.actions.size();
+    Runner runner(task, options, budget, r);
     try {
         r.status = runner.run();
     } catch (const LimitReached& stop) {
@@ -247,12 +253,13 @@ GroundOutcome ground_search(const ProblemPtr& problem, const SearchOptions& opti
     }
     if (r.status == SearchStatus::Solved) {
         std::optional<ACSet> last;
-        auto plan = to_dpo_plan(*task, runner.best(), &last);
+        auto plan = to_dpo_plan(task, runner.best(), &last);
+        const Problem& problem = *task.problem;
         if (!plan) {
             out.rejected = plan.error();
-        } else if (auto v = validate_plan(*problem, *plan); v.valid) {
+        } else if (auto v = validate_plan(problem, *plan); v.valid) {
             r.plan = std::move(*plan);
-        } else if (v.ambiguous && (!problem->goal || embed_goal(*problem->goal, *last))) {
+        } else if (v.ambiguous && (!problem.goal || embed_goal(*problem.goal, *last))) {
             // The replay applied each step with the match the search chose (each checked by
             // match_problem) and reached the goal; only the plan's text leaves a choice.
             r.caveat = fmt::format("the steps' arguments do not say which match the search "
@@ -264,7 +271,6 @@ GroundOutcome ground_search(const ProblemPtr& problem, const SearchOptions& opti
         }
     }
     fill_stats(r, budget);
-    return out;
 }
 
 } // namespace catplan::plan::ground

@@ -2,6 +2,7 @@
 // The grounded search (search.hpp): compile, search the ground task with the configuration the
 // options name, replay the plan as DPO steps and validate it.
 
+#include "catplan/plan/ground/task.hpp"
 #include "catplan/plan/search.hpp"
 
 namespace catplan::plan::ground {
@@ -19,5 +20,10 @@ struct GroundOutcome {
 /// Runs the grounded search within the budget.
 GroundOutcome ground_search(const ProblemPtr& problem, const SearchOptions& options,
                             Budget& budget);
+
+/// The search of ground_search on a task compiled before (its problem, initial state and goal as
+/// they are set in it, reuse.hpp), the plan replayed as DPO steps and validated, into out.
+void search_task(const Task& task, const SearchOptions& options, Budget& budget,
+                 GroundOutcome& out);
 
 } // namespace catplan::plan::ground

@@ -103,7 +103,8 @@ Word* StateRegistry::slot_for(StateId id) {
         if (budget_.would_exceed(bytes)) {
             throw LimitReached{SearchStatus::MemoryLimit};
         }
-        segments_.push_back(std::make_unique<Word[]>(std::size_t(per_segment_) * words_));
+        segments_.push_back(
+            std::make_unique_for_overwrite<Word[]>(std::size_t(per_segment_) * words_));
     }
     return segments_[seg].get() + std::size_t(id % per_segment_) * words_;
 }

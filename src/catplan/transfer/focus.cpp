@@ -1,0 +1,356 @@
+#include "catplan/transfer/focus.hpp"
+
+#include "catplan/hom/hom_search.hpp"
+
+#include <deque>
+#include <fmt/format.h>
+
+namespace catplan::transfer {
+namespace {
+
+using acset::ACSet;
+using acset::Value;
+
+// A part of an object that homs point into: an entity or a created thing, known by its name.
+bool pointed(const schema::Schema& s, ObId ob) {
+    return !s.homs_into(ob).empty();
+}
+
+// Whether a subgoal's attribute value is satisfied by y's: an unknown or unset one by any value.
+bool value_agrees(const Value& goal, const Value& y) {
+    return !goal.is_concrete() || goal == y;
+}
+
+// The parts of x that keep says, as a state of their own: parts in their order, hom values,
+// attribute values, names and every attribute variable of x.
+ACSet induced(const ACSet& x, const std::vector<std::vector<char>>& keep) {
+    const auto& s = x.schema();
+    ACSet out(x.schema_ptr());
+    std::vector<std::vector<Part>> to(s.num_obs());
+    for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
+        ObId ob(o);
+        to[o].assign(x.num_parts(ob), kNoPart);
+        for (Part p = 0; p < x.num_parts(ob); ++p) {
+            if (keep[o][p]) {
+                to[o][p] = out.add_part(ob, x.part_name(ob, p));
+            }
+        }
+    }
+    for (std::uint32_t t = 0; t < s.num_attr_types(); ++t) {
+        for (std::uint32_t j = 0; j < x.num_vars(AttrTypeId(t)); ++j) {
+            out.add_var(AttrTypeId(t), x.var_name(AttrTypeId(t), j));
+        }
+    }
+    for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
+        ObId ob(o);
+        for (Part p = 0; p < x.num_parts(ob); ++p) {
+            Part q = to[o][p];
+            if (q == kNoPart) {
+                continue;
+            }
+            for (HomId f : s.homs_from(ob)) {
+                Part t = x.subpart(f, p);
+                if (t != kNoPart) {
+                    Part tq = to[s.hom(f).codom.index()][t];
+                    CATPLAN_ASSERT(tq != kNoPart, "a focus keeps what its parts point to");
+                    out.set_subpart(f, q, tq);
+                }
+            }
+            for (AttrId a : s.attrs_from(ob)) {
+                out.set_subpart(a, q, x.subpart(a, p));
+            }
+        }
+    }
+    return out;
+}
+
+} // namespace
+
+bool embeds_by_names(const NamedState& x, const ACSet& goal) {
+    const auto& s = goal.schema();
+    bool variables = false;
+    for (std::uint32_t t = 0; t < s.num_attr_types(); ++t) {
+        variables = variables || goal.num_vars(AttrTypeId(t)) > 0;
+    }
+    if (!variables) {
+        // Part by part (the seeds of a focus are exactly what differs by names), unless two facts
+        // of the goal found the same fact of x.
+        auto f = Focus::of(x, goal);
+        if (f && !f->shared_fact()) {
+            return f->seeds() == 0;
+        }
+        if (!f) {
+            return false;
+        }
+    }
+    hom::HomSearchOptions opt;
+    opt.monic_all = true;
+    opt.max_results = 1;
+    for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
+        ObId ob(o);
+        if (!pointed(s, ob)) {
+            continue;
+        }
+        for (Part p = 0; p < goal.num_parts(ob); ++p) {
+            std::string_view name = goal.part_name(ob, p);
+            Part q = name.empty() ? kNoPart : x.find(ob, name);
+            if (q == kNoPart) {
+                return false;
+            }
+            opt.bind(ob, p, q);
+        }
+    }
+    return hom::is_homomorphic(goal, x.state(), opt);
+}
+
+Focus::Focus(const NamedState& y, const ACSet& subgoal) : y_(&y.state()), goal_(&subgoal) {}
+
+Result<Focus> Focus::of(const NamedState& y, const ACSet& subgoal) {
+    Focus f(y, subgoal);
+    if (auto why = f.match_names(y)) {
+        return fail(*why);
+    }
+    f.find_seeds();
+    return f;
+}
+
+// Every part of the subgoal that homs point into has a namesake in Y.
+std::optional<std::string> Focus::match_names(const NamedState& y) {
+    const auto& s = y_->schema();
+    namesake_.resize(s.num_obs());
+    goal_part_.resize(s.num_obs());
+    seeded_.resize(s.num_obs());
+    for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
+        ObId ob(o);
+        seeded_[o].assign(y_->num_parts(ob), 0);
+        if (!pointed(s, ob)) {
+            continue;
+        }
+        goal_part_[o].assign(y_->num_parts(ob), kNoPart);
+        for (Part p = 0; p < goal_->num_parts(ob); ++p) {
+            std::string_view name = goal_->part_name(ob, p);
+            Part q = name.empty() ? kNoPart : y.find(ob, name);
+            if (q == kNoPart) {
+                return fmt::format("the subgoal's {} {} has no namesake in the target state",
+                                   s.ob(ob).name, goal_->part_label(ob, p));
+            }
+            if (goal_part_[o][q] != kNoPart) {
+                return fmt::format("two parts of the subgoal are named {}", name);
+            }
+            namesake_[o].push_back(q);
+            goal_part_[o][q] = p;
+        }
+    }
+    return std::nullopt;
+}
+
+void Focus::seed(ObId ob, Part q) {
+    if (!seeded_[ob.index()][q]) {
+        seeded_[ob.index()][q] = 1;
+        seeds_.emplace_back(ob, q);
+    }
+}
+
+// The parts of Y that differ from their namesakes in the subgoal (with the parts the subgoal's
+// homs point to from them), and the arguments of the subgoal's facts that Y lacks.
+void Focus::find_seeds() {
+    const auto& s = y_->schema();
+    for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
+        ObId ob(o);
+        for (Part p = 0; p < goal_->num_parts(ob); ++p) {
+            bool differs = false;
+            if (pointed(s, ob)) {
+                Part q = namesake_[o][p];
+                for (HomId f : s.homs_from(ob)) {
+                    Part t = goal_->subpart(f, p);
+                    differs = differs || (t != kNoPart && namesake_[s.hom(f).codom.index()][t] !=
+                                                              y_->subpart(f, q));
+                }
+                for (AttrId a : s.attrs_from(ob)) {
+                    differs = differs || !value_agrees(goal_->subpart(a, p), y_->subpart(a, q));
+                }
+                if (differs) {
+                    seed(ob, q);
+                }
+            } else {
+                Part q = fact_in_y(ob, p);
+                differs = q == kNoPart;
+                if (!differs && seeded_[o][q]++) {
+                    shared_fact_ = true; // two facts of the subgoal are one fact of Y
+                }
+            }
+            if (!differs) {
+                continue;
+            }
+            for (HomId f : s.homs_from(ob)) {
+                Part t = goal_->subpart(f, p);
+                if (t != kNoPart) {
+                    ObId c = s.hom(f).codom;
+                    seed(c, namesake_[c.index()][t]);
+                }
+            }
+        }
+    }
+}
+
+// A part of Y of ob (nothing points into ob) with the hom values of the subgoal's part p (by
+// namesakes) and its concrete attribute values, or kNoPart.
+Part Focus::fact_in_y(ObId ob, Part p) const {
+    const auto& s = y_->schema();
+    auto homs = s.homs_from(ob);
+    auto same = [&](Part q) {
+        for (HomId f : homs) {
+            Part t = goal_->subpart(f, p);
+            if (t != kNoPart && namesake_[s.hom(f).codom.index()][t] != y_->subpart(f, q)) {
+                return false;
+            }
+        }
+        for (AttrId a : s.attrs_from(ob)) {
+            if (!value_agrees(goal_->subpart(a, p), y_->subpart(a, q))) {
+                return false;
+            }
+        }
+        return true;
+    };
+    for (HomId f : homs) {
+        Part t = goal_->subpart(f, p);
+        if (t == kNoPart) {
+            continue;
+        }
+        for (Part q : y_->incident(f, namesake_[s.hom(f).codom.index()][t])) {
+            if (same(q)) {
+                return q;
+            }
+        }
+        return kNoPart;
+    }
+    for (Part q = 0; q < y_->num_parts(ob); ++q) {
+        if (same(q)) {
+            return q;
+        }
+    }
+    return kNoPart;
+}
+
+FocusedProblem Focus::problem(std::size_t radius) const {
+    const auto& s = y_->schema();
+    std::vector<std::vector<char>> keep(s.num_obs());
+    for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
+        keep[o].assign(y_->num_parts(ObId(o)), 0);
+    }
+    // Breadth-first from the seeds, `radius` steps (homs either way, facts holding both).
+    std::deque<std::pair<std::pair<ObId, Part>, std::size_t>> queue;
+    for (auto sd : seeds_) {
+        keep[sd.first.index()][sd.second] = 1;
+        queue.push_back({sd, 0});
+    }
+    auto reach = [&](ObId ob, Part q, std::size_t d) {
+        if (q != kNoPart && !keep[ob.index()][q]) {
+            keep[ob.index()][q] = 1;
+            queue.push_back({{ob, q}, d});
+        }
+    };
+    while (!queue.empty()) {
+        auto [part, d] = queue.front();
+        queue.pop_front();
+        auto [ob, q] = part;
+        if (d >= radius) {
+            continue;
+        }
+        for (HomId f : s.homs_from(ob)) {
+            reach(s.hom(f).codom, y_->subpart(f, q), d + 1);
+        }
+        for (HomId f : s.homs_into(ob)) {
+            ObId dom = s.hom(f).dom;
+            for (Part a : y_->incident(f, q)) {
+                if (pointed(s, dom)) {
+                    reach(dom, a, d + 1);
+                    continue;
+                }
+                for (HomId g : s.homs_from(dom)) {
+                    reach(s.hom(g).codom, y_->subpart(g, a), d + 1);
+                }
+            }
+        }
+    }
+    close(keep);
+    return make_problem(std::move(keep));
+}
+
+// Adds what the kept parts point to, in Y and (through namesakes) in the subgoal.
+void Focus::close(std::vector<std::vector<char>>& keep) const {
+    const auto& s = y_->schema();
+    std::vector<std::pair<ObId, Part>> work;
+    for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
+        if (!pointed(s, ObId(o))) {
+            continue;
+        }
+        for (Part q = 0; q < keep[o].size(); ++q) {
+            if (keep[o][q]) {
+                work.emplace_back(ObId(o), q);
+            }
+        }
+    }
+    auto add = [&](ObId ob, Part q) {
+        if (q != kNoPart && !keep[ob.index()][q]) {
+            keep[ob.index()][q] = 1;
+            work.emplace_back(ob, q);
+        }
+    };
+    while (!work.empty()) {
+        auto [ob, q] = work.back();
+        work.pop_back();
+        Part p = goal_part_[ob.index()][q];
+        for (HomId f : s.homs_from(ob)) {
+            ObId c = s.hom(f).codom;
+            add(c, y_->subpart(f, q));
+            if (p != kNoPart && goal_->subpart(f, p) != kNoPart) {
+                add(c, namesake_[c.index()][goal_->subpart(f, p)]);
+            }
+        }
+    }
+}
+
+// The kept parts of Y (with the facts among them) and the subgoal's parts on them.
+FocusedProblem Focus::make_problem(std::vector<std::vector<char>> keep) const {
+    const auto& s = y_->schema();
+    std::vector<std::vector<char>> keep_goal(s.num_obs());
+    for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
+        ObId ob(o);
+        keep_goal[o].assign(goal_->num_parts(ob), 0);
+        if (pointed(s, ob)) {
+            for (Part p = 0; p < goal_->num_parts(ob); ++p) {
+                keep_goal[o][p] = keep[o][namesake_[o][p]];
+            }
+            continue;
+        }
+        // A fact is kept when every argument is.
+        auto args_kept = [&](const ACSet& x, Part q, bool in_goal) {
+            for (HomId f : s.homs_from(ob)) {
+                Part t = x.subpart(f, q);
+                ObId c = s.hom(f).codom;
+                if (t != kNoPart && !keep[c.index()][in_goal ? namesake_[c.index()][t] : t]) {
+                    return false;
+                }
+            }
+            return true;
+        };
+        for (Part q = 0; q < y_->num_parts(ob); ++q) {
+            keep[o][q] = args_kept(*y_, q, false) ? 1 : 0;
+        }
+        for (Part p = 0; p < goal_->num_parts(ob); ++p) {
+            keep_goal[o][p] = args_kept(*goal_, p, true) ? 1 : 0;
+        }
+    }
+    FocusedProblem out{induced(*y_, keep), induced(*goal_, keep_goal)};
+    out.whole = true;
+    for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
+        for (char k : keep[o]) {
+            out.whole = out.whole && k;
+            out.parts += (k && pointed(s, ObId(o))) ? 1 : 0;
+        }
+    }
+    return out;
+}
+
+} // namespace catplan::transfer

@@ -1,0 +1,122 @@
+#include "catplan/transfer/focus.hpp"
+
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+namespace catplan::transfer {
+namespace {
+
+using acset::ACSet;
+using schema::Schema;
+
+// Blocks (named) and the facts On(top, below) and Clear(block): what PDDL's blocks worlds become.
+struct Blocks {
+    std::shared_ptr<Schema> schema = std::make_shared<Schema>("Blocks");
+    ObId block = schema->add_ob("Block"), on = schema->add_ob("On"),
+         clear = schema->add_ob("Clear");
+    HomId top = schema->add_hom("top", on, block), below = schema->add_hom("below", on, block),
+          clear_of = schema->add_hom("clear_of", clear, block);
+    schema::SchemaPtr s = schema;
+
+    // Blocks A.. (n of them), towers bottom to top by index, the top of each clear.
+    ACSet state(int n, const std::vector<std::vector<int>>& towers) const {
+        ACSet x(s);
+        for (int i = 0; i < n; ++i) {
+            x.add_part(block, std::string(1, static_cast<char>('A' + i)));
+        }
+        for (const auto& t : towers) {
+            for (std::size_t i = 1; i < t.size(); ++i) {
+                add_on(x, t[i], t[i - 1]);
+            }
+            Part c = x.add_part(clear, "clear" + std::to_string(t.back()));
+            x.set_subpart(clear_of, c, static_cast<Part>(t.back()));
+        }
+        return x;
+    }
+
+    void add_on(ACSet& x, int top_block, int below_block) const {
+        Part o = x.add_part(on, "on" + std::to_string(x.num_parts(on)));
+        x.set_subpart(top, o, static_cast<Part>(top_block));
+        x.set_subpart(below, o, static_cast<Part>(below_block));
+    }
+};
+
+std::vector<std::string> block_names(const ACSet& x, ObId block) {
+    std::vector<std::string> out;
+    for (Part p = 0; p < x.num_parts(block); ++p) {
+        out.emplace_back(x.part_name(block, p));
+    }
+    return out;
+}
+
+TEST(Focus, KeepsThePartsNearWhatTheSubgoalChanges) {
+    Blocks b;
+    // A on B on C, D on E, F alone; the subgoal moves A from B onto D (the facts are named
+    // otherwise than in y: a fact is found by its arguments).
+    NamedState y(b.state(6, {{2, 1, 0}, {4, 3}, {5}}));
+    ACSet goal = b.state(6, {{2, 1}, {4, 3, 0}, {5}});
+    ASSERT_FALSE(embeds_by_names(y, goal));
+    auto f = Focus::of(y, goal);
+    ASSERT_TRUE(f) << f.error();
+    // On(A, D) is missing (A, D), Clear(B) is missing (B).
+    EXPECT_EQ(f->seeds(), 3u);
+    auto p1 = f->problem(1);
+    EXPECT_FALSE(p1.whole);
+    // Radius 1 adds C (On(B, C)) and E (On(D, E)); F is nowhere near.
+    EXPECT_EQ(block_names(p1.initial, b.block),
+              (std::vector<std::string>{"A", "B", "C", "D", "E"}));
+    EXPECT_EQ(p1.parts, 5u);
+    EXPECT_EQ(p1.initial.num_parts(b.on), 3u);    // On(A, B), On(B, C), On(D, E)
+    EXPECT_EQ(p1.initial.num_parts(b.clear), 2u); // Clear(A), Clear(D); Clear(F) is not kept
+    EXPECT_EQ(p1.goal.num_parts(b.on), 3u);       // On(B, C), On(D, E), On(A, D)
+    EXPECT_EQ(p1.goal.num_parts(b.clear), 2u);    // Clear(B), Clear(A)
+    // Every hom of the focused states lands in the focus.
+    for (const ACSet* x : {&p1.initial, &p1.goal}) {
+        for (Part o = 0; o < x->num_parts(b.on); ++o) {
+            EXPECT_NE(x->subpart(b.top, o), kNoPart);
+            EXPECT_NE(x->subpart(b.below, o), kNoPart);
+        }
+    }
+    // Radius 0 is the seeds alone, and a radius that reaches F is the whole state.
+    EXPECT_EQ(f->problem(0).parts, 3u);
+    ACSet far = b.state(6, {{2, 1, 0}, {4, 3}, {5}});
+    b.add_on(far, 5, 4); // F on E: F is now near D
+    NamedState y2(far);
+    ACSet goal2 = b.state(6, {{2, 1}, {4, 3, 0}});
+    b.add_on(goal2, 5, 4);
+    auto f2 = Focus::of(y2, goal2);
+    ASSERT_TRUE(f2) << f2.error();
+    EXPECT_TRUE(f2->problem(4).whole);
+}
+
+TEST(Focus, ComparesByNamesAndSaysWhenItCannot) {
+    Blocks b;
+    NamedState y(b.state(3, {{0, 1}, {2}}));
+    // The same state, its facts named otherwise: it holds by names, and nothing differs.
+    ACSet same = b.state(3, {{0, 1}, {2}});
+    for (Part o = 0; o < same.num_parts(b.on); ++o) {
+        same.set_part_name(b.on, o, "other" + std::to_string(o));
+    }
+    EXPECT_TRUE(embeds_by_names(y, same));
+    auto f = Focus::of(y, same);
+    ASSERT_TRUE(f);
+    EXPECT_EQ(f->seeds(), 0u);
+    // Less than y holds too (an embedding, not an isomorphism).
+    ACSet less = b.state(3, {{2}});
+    EXPECT_TRUE(embeds_by_names(y, less));
+    // Two equal facts cannot go to y's one: not monic.
+    ACSet twice = b.state(3, {{0, 1}, {2}});
+    b.add_on(twice, 1, 0);
+    EXPECT_FALSE(embeds_by_names(y, twice));
+    // A block y has no namesake for cannot be compared.
+    ACSet stranger = b.state(4, {{0, 1}, {2}, {3}});
+    EXPECT_FALSE(embeds_by_names(y, stranger));
+    auto g = Focus::of(y, stranger);
+    ASSERT_FALSE(g);
+    EXPECT_EQ(g.error(), "the subgoal's Block D has no namesake in the target state");
+}
+
+} // namespace
+} // namespace catplan::transfer
