@@ -274,9 +274,9 @@ std::string plan_summary(const plan::SearchResult& r, const std::string& search,
     return text + plan::describe(r.stats, timing, comment);
 }
 
-nlohmann::json plan_json(const plan::SearchResult& r, const std::string& search,
-                         nlohmann::json steps, bool timing) {
-    nlohmann::json j;
+nlohmann::ordered_json plan_json(const plan::SearchResult& r, const std::string& search,
+                         nlohmann::ordered_json steps, bool timing) {
+    nlohmann::ordered_json j;
     j["status"] = std::string(plan::to_string(r.status));
     if (r.status == plan::SearchStatus::Solved) {
         j["plan"] = std::move(steps);
@@ -289,7 +289,7 @@ nlohmann::json plan_json(const plan::SearchResult& r, const std::string& search,
         j["search"]["caveat"] = r.caveat;
     }
     const auto& st = r.stats;
-    nlohmann::json stats = {{"expanded", st.expanded},   {"evaluated", st.evaluated},
+    nlohmann::ordered_json stats = {{"expanded", st.expanded},   {"evaluated", st.evaluated},
                             {"generated", st.generated}, {"duplicates", st.duplicates},
                             {"states", st.states},       {"variables", st.variables},
                             {"actions", st.actions},     {"plans", st.plans}};
@@ -361,7 +361,7 @@ int cmd_plan(const PlanArgs& a, std::ostream& out, std::ostream& err) {
         text.clear();
     }
     if (json) {
-        nlohmann::json steps = nlohmann::json::array();
+        nlohmann::ordered_json steps = nlohmann::ordered_json::array();
         for (const auto& st : r.plan ? r.plan->steps : std::vector<plan::Step>{}) {
             steps.push_back({{"action", st.action}, {"args", st.args}});
         }

@@ -34,9 +34,9 @@ int cmd_check(const std::vector<std::string>& files, bool json, std::ostream& ou
     if (report(s, err)) {
         return input_error(s);
     }
-    nlohmann::json doc = {{"files", nlohmann::json::array()}};
+    nlohmann::ordered_json doc = {{"files", nlohmann::ordered_json::array()}};
     for (std::size_t i = 0; i < files.size(); ++i) {
-        nlohmann::json decls = nlohmann::json::array();
+        nlohmann::ordered_json decls = nlohmann::ordered_json::array();
         for (const auto& d : modules[i].declarations()) {
             if (d.imported) {
                 continue;
@@ -58,8 +58,8 @@ int cmd_check(const std::vector<std::string>& files, bool json, std::ostream& ou
 // ---- show -----------------------------------------------------------------------------------
 
 // The declaration as JSON: its kind, name and summary, and what it holds (docs/json-output.md).
-nlohmann::json show_json(const lang::Declaration& d) {
-    nlohmann::json j = declaration_json(d);
+nlohmann::ordered_json show_json(const lang::Declaration& d) {
+    nlohmann::ordered_json j = declaration_json(d);
     switch (d.kind) {
     case lang::DeclKind::Schema:
         j["schema"] = schema_value(*d.schema);
@@ -76,7 +76,7 @@ nlohmann::json show_json(const lang::Declaration& d) {
         break;
     case lang::DeclKind::Domain:
         j["schema"] = d.schema->name();
-        j["rules"] = nlohmann::json::array();
+        j["rules"] = nlohmann::ordered_json::array();
         for (const auto& r : d.domain->rules) {
             j["rules"].push_back({{"name", r->name}, {"summary", lang::summarize_rule(*r)}});
         }
@@ -89,7 +89,7 @@ nlohmann::json show_json(const lang::Declaration& d) {
     case lang::DeclKind::Map:
         j["target"] = d.map->target()->name();
         j["source"] = d.map->source()->name();
-        j["entries"] = nlohmann::json::array();
+        j["entries"] = nlohmann::ordered_json::array();
         for (const auto& line : migrate::describe_map(*d.map)) {
             j["entries"].push_back({{"name", line.name}, {"image", line.image}});
         }
@@ -180,7 +180,7 @@ int cmd_homs(const HomsArgs& a, std::ostream& out, std::ostream& err) {
     const auto& x = *dx->instance;
     const auto& y = *dy->instance;
     bool json = a.format == "json";
-    nlohmann::json doc = {{"from", a.from}, {"to", a.to}, {"monic", a.monic}, {"iso", a.iso}};
+    nlohmann::ordered_json doc = {{"from", a.from}, {"to", a.to}, {"monic", a.monic}, {"iso", a.iso}};
     hom::HomSearchOptions options;
     options.monic_all = a.monic;
     options.iso = a.iso;
@@ -201,7 +201,7 @@ int cmd_homs(const HomsArgs& a, std::ostream& out, std::ostream& err) {
         return kBadInput;
     }
     if (json) {
-        doc["homomorphisms"] = nlohmann::json::array();
+        doc["homomorphisms"] = nlohmann::ordered_json::array();
         for (const auto& f : result.morphisms) {
             doc["homomorphisms"].push_back(morphism_json(f, x, y));
         }

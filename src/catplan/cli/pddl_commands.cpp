@@ -90,14 +90,14 @@ std::string import_text(const pddl::Import& im, const std::string& domain_file) 
 }
 
 /// `pddl import --format json`: the schema, the initial state and goal, the rules of each action.
-nlohmann::json import_json(const pddl::Import& im) {
-    nlohmann::json j;
+nlohmann::ordered_json import_json(const pddl::Import& im) {
+    nlohmann::ordered_json j;
     j["schema"] = schema_value(*im.domain->schema);
-    j["initial"] = im.problem ? acset_value(*im.problem->initial) : nlohmann::json(nullptr);
-    j["goal"] = im.problem ? acset_value(*im.problem->goal) : nlohmann::json(nullptr);
-    j["actions"] = nlohmann::json::array();
+    j["initial"] = im.problem ? acset_value(*im.problem->initial) : nlohmann::ordered_json(nullptr);
+    j["goal"] = im.problem ? acset_value(*im.problem->goal) : nlohmann::ordered_json(nullptr);
+    j["actions"] = nlohmann::ordered_json::array();
     for (const auto& a : im.actions) {
-        nlohmann::json rules = nlohmann::json::array();
+        nlohmann::ordered_json rules = nlohmann::ordered_json::array();
         for (const auto& v : a.variants) {
             rules.push_back({{"name", v.rule->name}, {"summary", lang::summarize_rule(*v.rule)}});
         }
@@ -265,13 +265,13 @@ std::string where(const Session& s, SourceRange r) {
 
 /// `validate --format json` on PDDL: each step applied with its IPC action and arguments, the
 /// rule variant that applied and its match (replayed as DPO steps to find the matches).
-nlohmann::json ipc_validation_json(const Session& s, const pddl::Import& im,
+nlohmann::ordered_json ipc_validation_json(const Session& s, const pddl::Import& im,
                                    const pddl::IpcPlan& plan, const pddl::IpcValidation& v) {
     plan::ValidateOptions options;
     options.keep_states = true;
     auto replay = plan::validate_plan(*im.problem, v.plan, options);
-    nlohmann::json rule_steps = validated_steps_json(*im.problem, v.plan.steps, replay);
-    nlohmann::json steps = nlohmann::json::array();
+    nlohmann::ordered_json rule_steps = validated_steps_json(*im.problem, v.plan.steps, replay);
+    nlohmann::ordered_json steps = nlohmann::ordered_json::array();
     for (std::size_t i = 0; i < rule_steps.size(); ++i) {
         auto step = step_json(plan[i].action, plan[i].args, rule_steps[i]["match"]);
         step["rule"] = v.plan.steps[i].to_string();
@@ -284,7 +284,7 @@ nlohmann::json ipc_validation_json(const Session& s, const pddl::Import& im,
     }
     auto j =
         validation_json(v.valid, v.goal_reached, v.failed_step, v.reason, at, std::move(steps));
-    j["cost"] = v.valid ? nlohmann::json(v.cost.total) : nlohmann::json(nullptr);
+    j["cost"] = v.valid ? nlohmann::ordered_json(v.cost.total) : nlohmann::ordered_json(nullptr);
     j["unit_cost"] = v.cost.unit;
     return j;
 }
@@ -416,12 +416,12 @@ int pddl_plan(const std::vector<std::string>& files, const plan::SearchOptions& 
         }
     }
     if (json) {
-        nlohmann::json steps = nlohmann::json::array();
+        nlohmann::ordered_json steps = nlohmann::ordered_json::array();
         for (const auto& st : ipc ? *ipc : pddl::IpcPlan{}) {
             steps.push_back({{"action", st.action}, {"args", st.args}});
         }
         auto j = plan_json(r, search, std::move(steps), timing);
-        j["cost"] = ipc ? nlohmann::json(cost.total) : nlohmann::json(nullptr);
+        j["cost"] = ipc ? nlohmann::ordered_json(cost.total) : nlohmann::ordered_json(nullptr);
         j["unit_cost"] = pddl::unit_cost(im->pddl_domain, *im->pddl_problem);
         if (!j["unit_cost"].get<bool>()) {
             j["optimal"] = false; // the search counted steps, not costs

@@ -28,8 +28,8 @@ int pddl_plan(const std::vector<std::string>& files, const plan::SearchOptions& 
 std::string plan_summary(const plan::SearchResult& r, const std::string& search, std::size_t steps,
                          bool timing, std::string_view comment);
 /// A planner run as JSON: status, plan (the given steps), the search, the statistics.
-nlohmann::json plan_json(const plan::SearchResult& r, const std::string& search,
-                         nlohmann::json steps, bool timing);
+nlohmann::ordered_json plan_json(const plan::SearchResult& r, const std::string& search,
+                         nlohmann::ordered_json steps, bool timing);
 /// 0 solved, 1 unsolvable, 4 a limit (docs/exit-codes.md).
 int plan_exit_code(plan::SearchStatus status);
 

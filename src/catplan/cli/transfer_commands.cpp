@@ -52,7 +52,7 @@ std::string construction_line(const transfer::Verdict& v) {
 }
 
 // The first divergence as JSON (null when the target states are the migrated source states).
-nlohmann::json divergence_json(const transfer::Verdict& v) {
+nlohmann::ordered_json divergence_json(const transfer::Verdict& v) {
     const auto* d = v.diverged();
     if (d == nullptr) {
         return nullptr;
@@ -111,7 +111,7 @@ const char* kind_name(transfer::StepTransfer::Kind k) {
 
 // A match as morphism_json when the rule and the state it went into are known (the states are
 // kept for JSON), else null.
-nlohmann::json match_json(const hom::ACSetMorphism& m, const rewrite::Rule* rule,
+nlohmann::ordered_json match_json(const hom::ACSetMorphism& m, const rewrite::Rule* rule,
                           const std::vector<acset::ACSet>& states, std::size_t i) {
     if (rule == nullptr || i >= states.size() ||
         m.components.size() != rule->L.schema().num_obs()) {
@@ -122,8 +122,8 @@ nlohmann::json match_json(const hom::ACSetMorphism& m, const rewrite::Rule* rule
 
 // Each transferred step as an object: the source step with its match, how it was carried out,
 // and the target steps it became (the first with its match, unless repaired).
-nlohmann::json steps_json(const TransferInputs& in, const transfer::TransferResult& t) {
-    nlohmann::json out = nlohmann::json::array();
+nlohmann::ordered_json steps_json(const TransferInputs& in, const transfer::TransferResult& t) {
+    nlohmann::ordered_json out = nlohmann::ordered_json::array();
     for (std::size_t i = 0; i < t.steps.size(); ++i) {
         const auto& st = t.steps[i];
         const auto* source_rule = in.problem->domain->find_rule(st.source.action);
@@ -133,7 +133,7 @@ nlohmann::json steps_json(const TransferInputs& in, const transfer::TransferResu
         } else if (st.kind == transfer::StepTransfer::Kind::Corresponds) {
             target_rule = in.pddl->actions->domain->find_rule(st.target.action);
         }
-        nlohmann::json targets = nlohmann::json::array();
+        nlohmann::ordered_json targets = nlohmann::ordered_json::array();
         for (const auto& ts : st.target_steps) {
             targets.push_back(step_json(
                 ts.action, ts.args,
@@ -247,15 +247,14 @@ std::string text_report(const TransferCommandArgs& a, const TransferInputs& in, 
     return o;
 }
 
-nlohmann::json json_report(const TransferCommandArgs& a, const TransferInputs& in,
+nlohmann::ordered_json json_report(const TransferCommandArgs& a, const TransferInputs& in,
                            const Outcome& r) {
     const auto& t = r.t;
     const auto& v = t.verdict;
-    nlohmann::json j;
-    j["source_plan"] = plan_strings(in.plan.steps);
-    j["source_valid"] = v.source_valid();
-    j["target_plan"] = plan_strings(target_steps(t));
-    j["steps"] = steps_json(in, t);
+    nlohmann::ordered_json j;
+    j["map"] = a.in.map;
+    j["source_schema"] = in.map->source()->name();
+    j["target_schema"] = in.map->target()->name();
     j["valid"] = v.valid();
     j["failed_step"] = nullptr;
     if (const auto* failed = v.failed_step()) {
@@ -274,16 +273,17 @@ nlohmann::json json_report(const TransferCommandArgs& a, const TransferInputs& i
     }
     j["diverged_at"] = divergence_json(v);
     if (v.divergences.size() > 1) {
-        nlohmann::json all = nlohmann::json::array();
+        nlohmann::ordered_json all = nlohmann::ordered_json::array();
         for (const auto& d : v.divergences) {
             all.push_back(d.step);
         }
         j["diverged_steps"] = all;
     }
-    j["map"] = a.in.map;
-    j["source_schema"] = in.map->source()->name();
-    j["target_schema"] = in.map->target()->name();
-    nlohmann::json actions = nlohmann::json::array();
+    j["source_plan"] = plan_strings(in.plan.steps);
+    j["source_valid"] = v.source_valid();
+    j["target_plan"] = plan_strings(target_steps(t));
+    j["steps"] = steps_json(in, t);
+    nlohmann::ordered_json actions = nlohmann::ordered_json::array();
     for (const auto& rule : t.target_domain.domain->rules) {
         actions.push_back(rule->name);
     }
@@ -298,7 +298,7 @@ nlohmann::json json_report(const TransferCommandArgs& a, const TransferInputs& i
     }
     if (r.replan) {
         const auto& rp = *r.replan;
-        nlohmann::json k;
+        nlohmann::ordered_json k;
         k["status"] = std::string(plan::to_string(rp.search.status));
         k["plan"] = plan_strings(rp.steps);
         k["edit_distance"] = rp.edit_distance;
@@ -431,7 +431,7 @@ PlanResult transfer_one(const TransferCommandArgs& a, Session& s, TransferInputs
         p.rc = kBadInput;
         p.diagnostics = diag.str();
         p.json = json::dump(
-            nlohmann::json{{"plan_file", path}, {"exit_code", p.rc}, {"errors", p.diagnostics}});
+            nlohmann::ordered_json{{"plan_file", path}, {"exit_code", p.rc}, {"errors", p.diagnostics}});
         p.line = fmt::format("{}: not read (exit 2): the errors are on stderr\n", path);
         return p;
     }
@@ -452,7 +452,7 @@ PlanResult transfer_one(const TransferCommandArgs& a, Session& s, TransferInputs
             rest.remove_prefix(end == std::string_view::npos ? rest.size() : end + 1);
         }
     } else {
-        nlohmann::json j = json_report(a, in, r);
+        nlohmann::ordered_json j = json_report(a, in, r);
         j["plan_file"] = path;
         j["exit_code"] = p.rc;
         if (in.pddl) {
@@ -502,9 +502,9 @@ std::optional<std::vector<OutputText>> plan_outputs(const TransferCommandArgs& a
 std::string batch_report(const TransferCommandArgs& a, const std::vector<PlanResult>& results) {
     std::string o;
     if (a.format == "json") {
-        nlohmann::json all = nlohmann::json::array();
+        nlohmann::ordered_json all = nlohmann::ordered_json::array();
         for (const auto& p : results) {
-            all.push_back(nlohmann::json::parse(p.json));
+            all.push_back(nlohmann::ordered_json::parse(p.json));
         }
         return json::dump(all, 2) + "\n";
     }

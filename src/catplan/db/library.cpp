@@ -9,7 +9,7 @@
 
 namespace catplan::db {
 
-using Json = nlohmann::json;
+using Json = nlohmann::ordered_json;
 
 std::string state_to_text(const acset::ACSet& x) {
     const auto& s = x.schema();

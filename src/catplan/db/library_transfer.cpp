@@ -173,7 +173,7 @@ Status store(Connection& c, const std::vector<StoredTransfer>& results) {
                                      "unsatisfied", "target_plan", "failed_step",    "ms"};
     std::vector<std::string> unsatisfied, plans;
     for (const auto& t : results) {
-        unsatisfied.push_back(nlohmann::json(t.unsatisfied).dump());
+        unsatisfied.push_back(nlohmann::ordered_json(t.unsatisfied).dump());
         std::string p;
         for (const auto& s : t.target_plan) {
             p += s + "\n";
