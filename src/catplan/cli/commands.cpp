@@ -275,7 +275,7 @@ std::string plan_summary(const plan::SearchResult& r, const std::string& search,
 }
 
 nlohmann::ordered_json plan_json(const plan::SearchResult& r, const std::string& search,
-                         nlohmann::ordered_json steps, bool timing) {
+                                 nlohmann::ordered_json steps, bool timing) {
     nlohmann::ordered_json j;
     j["status"] = std::string(plan::to_string(r.status));
     if (r.status == plan::SearchStatus::Solved) {
@@ -290,9 +290,9 @@ nlohmann::ordered_json plan_json(const plan::SearchResult& r, const std::string&
     }
     const auto& st = r.stats;
     nlohmann::ordered_json stats = {{"expanded", st.expanded},   {"evaluated", st.evaluated},
-                            {"generated", st.generated}, {"duplicates", st.duplicates},
-                            {"states", st.states},       {"variables", st.variables},
-                            {"actions", st.actions},     {"plans", st.plans}};
+                                    {"generated", st.generated}, {"duplicates", st.duplicates},
+                                    {"states", st.states},       {"variables", st.variables},
+                                    {"actions", st.actions},     {"plans", st.plans}};
     if (timing) {
         double search_s = st.search_seconds();
         stats["seconds"] = st.seconds;

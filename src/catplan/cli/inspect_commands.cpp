@@ -180,7 +180,8 @@ int cmd_homs(const HomsArgs& a, std::ostream& out, std::ostream& err) {
     const auto& x = *dx->instance;
     const auto& y = *dy->instance;
     bool json = a.format == "json";
-    nlohmann::ordered_json doc = {{"from", a.from}, {"to", a.to}, {"monic", a.monic}, {"iso", a.iso}};
+    nlohmann::ordered_json doc = {
+        {"from", a.from}, {"to", a.to}, {"monic", a.monic}, {"iso", a.iso}};
     hom::HomSearchOptions options;
     options.monic_all = a.monic;
     options.iso = a.iso;

@@ -15,7 +15,7 @@ nlohmann::ordered_json schema_value(const schema::Schema& s) {
 }
 
 nlohmann::ordered_json morphism_json(const hom::ACSetMorphism& f, const acset::ACSet& x,
-                             const acset::ACSet& y) {
+                                     const acset::ACSet& y) {
     const auto& s = x.schema();
     nlohmann::ordered_json j = nlohmann::ordered_json::object();
     for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
@@ -44,8 +44,9 @@ nlohmann::ordered_json morphism_json(const hom::ACSetMorphism& f, const acset::A
     return j;
 }
 
-nlohmann::ordered_json step_json(const std::string& action, const std::vector<std::string>& arguments,
-                         nlohmann::ordered_json match) {
+nlohmann::ordered_json step_json(const std::string& action,
+                                 const std::vector<std::string>& arguments,
+                                 nlohmann::ordered_json match) {
     nlohmann::ordered_json j = {{"action", action}, {"arguments", arguments}};
     if (!match.is_null()) {
         j["match"] = std::move(match);
@@ -64,8 +65,9 @@ std::string json_text(const nlohmann::ordered_json& doc) {
 }
 
 nlohmann::ordered_json validation_json(bool valid, bool goal_reached,
-                               std::optional<std::size_t> failed_step, const std::string& reason,
-                               const std::string& location, nlohmann::ordered_json steps) {
+                                       std::optional<std::size_t> failed_step,
+                                       const std::string& reason, const std::string& location,
+                                       nlohmann::ordered_json steps) {
     nlohmann::ordered_json j = {{"valid", valid}, {"goal_reached", goal_reached}};
     j["steps"] = std::move(steps);
     j["failed_step"] = nullptr;
@@ -77,8 +79,8 @@ nlohmann::ordered_json validation_json(bool valid, bool goal_reached,
 }
 
 nlohmann::ordered_json validated_steps_json(const plan::Problem& problem,
-                                    const std::vector<plan::Step>& steps,
-                                    const plan::Validation& v) {
+                                            const std::vector<plan::Step>& steps,
+                                            const plan::Validation& v) {
     nlohmann::ordered_json out = nlohmann::ordered_json::array();
     for (std::size_t i = 0; i < v.matches.size() && i + 1 <= v.states.size(); ++i) {
         const auto* rule = problem.domain->find_rule(steps[i].action);

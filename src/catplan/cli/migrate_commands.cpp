@@ -123,7 +123,8 @@ int cmd_migrate_domain(const MigrateDomainArgs& a, std::ostream& out, std::ostre
         return kBadInput;
     }
     bool json = a.format == "json";
-    nlohmann::ordered_json doc = {{"domain", a.domain}, {"map", a.map}, {"schema", f->target()->name()}};
+    nlohmann::ordered_json doc = {
+        {"domain", a.domain}, {"map", a.map}, {"schema", f->target()->name()}};
     doc["rules"] = nlohmann::ordered_json::array();
     if (!json) {
         out << fmt::format("domain {} migrated along {}, on {}\n", a.domain, a.map,

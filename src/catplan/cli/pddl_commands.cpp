@@ -266,7 +266,8 @@ std::string where(const Session& s, SourceRange r) {
 /// `validate --format json` on PDDL: each step applied with its IPC action and arguments, the
 /// rule variant that applied and its match (replayed as DPO steps to find the matches).
 nlohmann::ordered_json ipc_validation_json(const Session& s, const pddl::Import& im,
-                                   const pddl::IpcPlan& plan, const pddl::IpcValidation& v) {
+                                           const pddl::IpcPlan& plan,
+                                           const pddl::IpcValidation& v) {
     plan::ValidateOptions options;
     options.keep_states = true;
     auto replay = plan::validate_plan(*im.problem, v.plan, options);

@@ -29,7 +29,7 @@ std::string plan_summary(const plan::SearchResult& r, const std::string& search,
                          bool timing, std::string_view comment);
 /// A planner run as JSON: status, plan (the given steps), the search, the statistics.
 nlohmann::ordered_json plan_json(const plan::SearchResult& r, const std::string& search,
-                         nlohmann::ordered_json steps, bool timing);
+                                 nlohmann::ordered_json steps, bool timing);
 /// 0 solved, 1 unsolvable, 4 a limit (docs/exit-codes.md).
 int plan_exit_code(plan::SearchStatus status);
 

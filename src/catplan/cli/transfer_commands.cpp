@@ -112,7 +112,7 @@ const char* kind_name(transfer::StepTransfer::Kind k) {
 // A match as morphism_json when the rule and the state it went into are known (the states are
 // kept for JSON), else null.
 nlohmann::ordered_json match_json(const hom::ACSetMorphism& m, const rewrite::Rule* rule,
-                          const std::vector<acset::ACSet>& states, std::size_t i) {
+                                  const std::vector<acset::ACSet>& states, std::size_t i) {
     if (rule == nullptr || i >= states.size() ||
         m.components.size() != rule->L.schema().num_obs()) {
         return nullptr;
@@ -248,7 +248,7 @@ std::string text_report(const TransferCommandArgs& a, const TransferInputs& in, 
 }
 
 nlohmann::ordered_json json_report(const TransferCommandArgs& a, const TransferInputs& in,
-                           const Outcome& r) {
+                                   const Outcome& r) {
     const auto& t = r.t;
     const auto& v = t.verdict;
     nlohmann::ordered_json j;
@@ -430,8 +430,8 @@ PlanResult transfer_one(const TransferCommandArgs& a, Session& s, TransferInputs
     if (!load_transfer_plan(s, in, path, diag)) {
         p.rc = kBadInput;
         p.diagnostics = diag.str();
-        p.json = json::dump(
-            nlohmann::ordered_json{{"plan_file", path}, {"exit_code", p.rc}, {"errors", p.diagnostics}});
+        p.json = json::dump(nlohmann::ordered_json{
+            {"plan_file", path}, {"exit_code", p.rc}, {"errors", p.diagnostics}});
         p.line = fmt::format("{}: not read (exit 2): the errors are on stderr\n", path);
         return p;
     }

@@ -284,8 +284,8 @@ Result<std::string> problem_text(Writer& w, const GoalText& goal,
     std::string g = goal.pattern
                         ? fmt::format("({})", w.goal_predicate)
                         : (goal.statements.empty() ? "(and)" : conjunction(goal.statements));
-    return out + fmt::format("  (:goal {}){}\n", g,
-                             costs ? "\n  (:metric minimize (total-cost)))" : ")");
+    return out +
+           fmt::format("  (:goal {}){}\n", g, costs ? "\n  (:metric minimize (total-cost)))" : ")");
 }
 
 /// A Writer with its reading and marker shapes.
