@@ -305,6 +305,7 @@ nlohmann::ordered_json json_report(const TransferCommandArgs& a, const TransferI
         k["expanded"] = rp.search.stats.expanded;
         if (!a.no_timing) {
             k["ms"] = rp.ms;
+            k["ground_ms"] = rp.search.stats.ground_seconds * 1000;
             k["peak_rss_kib"] = rp.peak_rss_kib;
             k["speedup"] = rp.ms / std::max(t.timings.total_ms, 1e-6);
             k["speedup_is_lower_bound"] = transfer::hit_limit(rp);

@@ -175,27 +175,21 @@ std::vector<std::size_t> part_counts(const Rule& rule) {
     return counts;
 }
 
-bool same_counts(const Rule& rule, const std::vector<std::size_t>& counts) {
-    std::size_t i = 0;
-    for (std::uint32_t o = 0; o < rule.L.schema().num_obs(); ++o) {
-        for (const ACSet* x : {&rule.L, &rule.K, &rule.R}) {
-            if (counts[i++] != x->num_parts(ObId(o))) {
-                return false;
-            }
-        }
-    }
-    return true;
+bool same_counts(const Rule& rule, const std::vector<std::size_t>& counts, ObId ob) {
+    std::size_t i = 3 * std::size_t{ob.index()};
+    return counts[i] == rule.L.num_parts(ob) && counts[i + 1] == rule.K.num_parts(ob) &&
+           counts[i + 2] == rule.R.num_parts(ob);
 }
 
 } // namespace
 
-const Rule::Anatomy& Rule::anatomy() const {
+const Rule::Anatomy& Rule::anatomy(ObId ob) const {
     if (!anatomy_) {
         anatomy_ = std::make_shared<const Anatomy>(Anatomy{colimit::parts_outside_image(l, L),
                                                            colimit::parts_outside_image(r, R),
                                                            part_counts(*this)});
     } else {
-        CATPLAN_ASSERT(same_counts(*this, anatomy_->counts),
+        CATPLAN_ASSERT(same_counts(*this, anatomy_->counts, ob),
                        "a rule's states changed after its deleted and created parts were read");
     }
     return *anatomy_;

@@ -133,20 +133,21 @@ struct Rule {
     explicit Rule(const schema::SchemaPtr& s) : L(s), K(s), R(s) {}
 
     /// The parts of L at ob outside l(K), in increasing order: what the rule deletes.
-    const std::vector<Part>& deleted_parts(ObId ob) const { return anatomy().deleted[ob.index()]; }
+    const std::vector<Part>& deleted_parts(ObId ob) const { return anatomy(ob).deleted[ob.index()]; }
 
     /// The parts of R at ob outside r(K), in increasing order: what the rule creates.
-    const std::vector<Part>& created_parts(ObId ob) const { return anatomy().created[ob.index()]; }
+    const std::vector<Part>& created_parts(ObId ob) const { return anatomy(ob).created[ob.index()]; }
 
 private:
     // What the rule deletes and creates, computed on first use. A builder fills L, K, R, l and r
-    // first; changing them afterwards is a misuse (asserted on the part counts).
+    // first; changing them afterwards is a misuse (asserted on the part counts at the object
+    // asked about: these are read once per ground action, so the check must not cost more).
     struct Anatomy {
         std::vector<std::vector<Part>> deleted, created;
         std::vector<std::size_t> counts; // per object: parts of L, K, R when computed
     };
 
-    const Anatomy& anatomy() const;
+    const Anatomy& anatomy(ObId ob) const;
 
     mutable std::shared_ptr<const Anatomy> anatomy_;
 };

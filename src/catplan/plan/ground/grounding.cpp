@@ -92,31 +92,44 @@ RuleShape shape_of(const Rule& rule, std::uint32_t index) {
     return sh;
 }
 
-// A set of facts, one per variable, that refuses contradictions.
+// A set of facts, one per variable, that refuses contradictions. A sorted vector: drafts are
+// copied at every choice while grounding, and a handful of facts copies cheaply.
 class Facts {
 public:
     bool add(Fact f) {
-        auto [it, fresh] = map_.emplace(f.var, f.value);
-        return fresh || it->second == f.value;
+        auto it = lower(f.var);
+        if (it != facts_.end() && it->var == f.var) {
+            return it->value == f.value;
+        }
+        facts_.insert(it, f);
+        return true;
     }
 
-    void set(Fact f) { map_[f.var] = f.value; }
+    void set(Fact f) {
+        auto it = lower(f.var);
+        if (it != facts_.end() && it->var == f.var) {
+            it->value = f.value;
+        } else {
+            facts_.insert(it, f);
+        }
+    }
 
     std::optional<std::uint32_t> find(VarId v) const {
-        auto it = map_.find(v);
-        return it == map_.end() ? std::nullopt : std::optional<std::uint32_t>(it->second);
+        auto it = std::lower_bound(facts_.begin(), facts_.end(), v,
+                                   [](const Fact& f, VarId x) { return f.var < x; });
+        return it == facts_.end() || it->var != v ? std::nullopt
+                                                  : std::optional<std::uint32_t>(it->value);
     }
 
-    std::vector<Fact> sorted() const {
-        std::vector<Fact> out;
-        for (auto [v, x] : map_) {
-            out.push_back({v, x});
-        }
-        return out; // std::map iterates in order
-    }
+    const std::vector<Fact>& sorted() const { return facts_; }
 
 private:
-    std::map<VarId, std::uint32_t> map_;
+    std::vector<Fact>::iterator lower(VarId v) {
+        return std::lower_bound(facts_.begin(), facts_.end(), v,
+                                [](const Fact& f, VarId x) { return f.var < x; });
+    }
+
+    std::vector<Fact> facts_; // by variable
 };
 
 class Grounder {
