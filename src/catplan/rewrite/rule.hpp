@@ -133,10 +133,14 @@ struct Rule {
     explicit Rule(const schema::SchemaPtr& s) : L(s), K(s), R(s) {}
 
     /// The parts of L at ob outside l(K), in increasing order: what the rule deletes.
-    const std::vector<Part>& deleted_parts(ObId ob) const { return anatomy(ob).deleted[ob.index()]; }
+    const std::vector<Part>& deleted_parts(ObId ob) const {
+        return anatomy(ob).deleted[ob.index()];
+    }
 
     /// The parts of R at ob outside r(K), in increasing order: what the rule creates.
-    const std::vector<Part>& created_parts(ObId ob) const { return anatomy(ob).created[ob.index()]; }
+    const std::vector<Part>& created_parts(ObId ob) const {
+        return anatomy(ob).created[ob.index()];
+    }
 
 private:
     // What the rule deletes and creates, computed on first use. A builder fills L, K, R, l and r
