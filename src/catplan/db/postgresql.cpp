@@ -1,13 +1,14 @@
-// The PostgreSQL engine (Debian's libpq): statements as text, rows read in single-row mode (so a
-// result never has to fit in memory) and bulk insertion through COPY FROM STDIN in text format.
+// The PostgreSQL engine (Debian's libpq, loaded at the first connection: detail/libpq.hpp):
+// statements as text, rows read in single-row mode (so a result never has to fit in memory) and
+// bulk insertion through COPY FROM STDIN in text format.
 
 #include "catplan/base/escape.hpp"
 #include "catplan/db/detail/engines.hpp"
+#include "catplan/db/detail/libpq.hpp"
 
 #include <charconv>
 #include <cstdlib>
 #include <fmt/format.h>
-#include <libpq-fe.h>
 
 namespace catplan::db::detail {
 namespace {
@@ -16,9 +17,9 @@ class PgRow final : public Row {
 public:
     explicit PgRow(const PGresult* r) : r_(r) {}
 
-    std::size_t size() const override { return static_cast<std::size_t>(PQnfields(r_)); }
+    std::size_t size() const override { return static_cast<std::size_t>(libpq().nfields(r_)); }
 
-    bool is_null(std::size_t i) const override { return PQgetisnull(r_, 0, col(i)) == 1; }
+    bool is_null(std::size_t i) const override { return libpq().getisnull(r_, 0, col(i)) == 1; }
 
     std::optional<std::int64_t> integer(std::size_t i) const override {
         if (is_null(i) || !numeric(i, /*integral=*/true)) {
@@ -47,14 +48,14 @@ public:
     }
 
     std::optional<bool> boolean(std::size_t i) const override {
-        if (is_null(i) || PQftype(r_, col(i)) != kBool) {
+        if (is_null(i) || libpq().ftype(r_, col(i)) != kBool) {
             return std::nullopt;
         }
         return raw(i) == "t";
     }
 
     std::optional<std::string> text(std::size_t i) const override {
-        Oid t = PQftype(r_, col(i));
+        Oid t = libpq().ftype(r_, col(i));
         if (is_null(i) || (t != kText && t != kVarchar && t != kName && t != kBpchar)) {
             return std::nullopt;
         }
@@ -77,13 +78,14 @@ private:
     int col(std::size_t i) const { return static_cast<int>(i); }
 
     bool numeric(std::size_t i, bool integral) const {
-        Oid t = PQftype(r_, col(i));
+        Oid t = libpq().ftype(r_, col(i));
         bool whole = t == kInt8 || t == kInt2 || t == kInt4 || t == kOid;
         return integral ? whole : whole || t == kFloat4 || t == kFloat8 || t == kNumeric;
     }
 
     std::string_view raw(std::size_t i) const {
-        return {PQgetvalue(r_, 0, col(i)), static_cast<std::size_t>(PQgetlength(r_, 0, col(i)))};
+        return {libpq().getvalue(r_, 0, col(i)),
+                static_cast<std::size_t>(libpq().getlength(r_, 0, col(i)))};
     }
 
     const PGresult* r_;
@@ -98,7 +100,7 @@ struct Res {
     Res(const Res&) = delete;
     Res& operator=(const Res&) = delete;
 
-    ~Res() { PQclear(r); }
+    ~Res() { libpq().clear(r); }
 };
 
 // Appends a cell in COPY's text format: \N for NULL, backslash escapes in text.
@@ -133,13 +135,13 @@ class PgConnection final : public Connection {
 public:
     explicit PgConnection(PGconn* c) : c_(c) {}
 
-    ~PgConnection() override { PQfinish(c_); }
+    ~PgConnection() override { libpq().finish(c_); }
 
     Engine engine() const override { return Engine::PostgreSQL; }
 
     Status exec(const std::string& sql) override {
-        Res r(PQexec(c_, sql.c_str()));
-        auto s = PQresultStatus(r.r);
+        Res r(libpq().exec(c_, sql.c_str()));
+        auto s = libpq().resultStatus(r.r);
         if (s != PGRES_COMMAND_OK && s != PGRES_TUPLES_OK) {
             return error(r.r);
         }
@@ -148,19 +150,19 @@ public:
 
     Status query(const std::string& sql, const RowFn& fn,
                  std::vector<std::string>* names) override {
-        if (PQsendQuery(c_, sql.c_str()) != 1) {
+        if (libpq().sendQuery(c_, sql.c_str()) != 1) {
             return error(nullptr);
         }
-        PQsetSingleRowMode(c_);
+        libpq().setSingleRowMode(c_);
         std::optional<Failure> failure;
         bool reading = true;
         bool named = names == nullptr;
-        while (PGresult* p = PQgetResult(c_)) {
+        while (PGresult* p = libpq().getResult(c_)) {
             Res r(p);
-            auto s = PQresultStatus(r.r);
+            auto s = libpq().resultStatus(r.r);
             if (!named && (s == PGRES_SINGLE_TUPLE || s == PGRES_TUPLES_OK)) {
-                for (int i = 0; i < PQnfields(r.r); ++i) {
-                    names->emplace_back(PQfname(r.r, i));
+                for (int i = 0; i < libpq().nfields(r.r); ++i) {
+                    names->emplace_back(libpq().fname(r.r, i));
                 }
                 named = true;
             }
@@ -187,8 +189,8 @@ public:
         }
         sql += ") FROM STDIN";
         {
-            Res r(PQexec(c_, sql.c_str()));
-            if (PQresultStatus(r.r) != PGRES_COPY_IN) {
+            Res r(libpq().exec(c_, sql.c_str()));
+            if (libpq().resultStatus(r.r) != PGRES_COPY_IN) {
                 return error(r.r);
             }
         }
@@ -206,18 +208,18 @@ public:
             }
             buf += '\n';
             if (buf.size() >= (1U << 20)) {
-                ok = PQputCopyData(c_, buf.data(), static_cast<int>(buf.size())) == 1;
+                ok = libpq().putCopyData(c_, buf.data(), static_cast<int>(buf.size())) == 1;
                 buf.clear();
             }
         }
         if (ok && !buf.empty()) {
-            ok = PQputCopyData(c_, buf.data(), static_cast<int>(buf.size())) == 1;
+            ok = libpq().putCopyData(c_, buf.data(), static_cast<int>(buf.size())) == 1;
         }
-        PQputCopyEnd(c_, ok ? nullptr : "catplan stopped the copy");
+        libpq().putCopyEnd(c_, ok ? nullptr : "catplan stopped the copy");
         std::optional<Failure> failure;
-        while (PGresult* p = PQgetResult(c_)) {
+        while (PGresult* p = libpq().getResult(c_)) {
             Res r(p);
-            if (PQresultStatus(r.r) != PGRES_COMMAND_OK && !failure) {
+            if (libpq().resultStatus(r.r) != PGRES_COMMAND_OK && !failure) {
                 failure = error(r.r);
             }
         }
@@ -229,9 +231,9 @@ public:
 
 private:
     Failure error(const PGresult* r) const {
-        std::string why = r != nullptr ? PQresultErrorMessage(r) : "";
+        std::string why = r != nullptr ? libpq().resultErrorMessage(r) : "";
         if (why.empty()) {
-            why = PQerrorMessage(c_);
+            why = libpq().errorMessage(c_);
         }
         while (!why.empty() && (why.back() == '\n' || why.back() == ' ')) {
             why.pop_back();
@@ -245,13 +247,18 @@ private:
 } // namespace
 
 Result<std::unique_ptr<Connection>> connect_postgresql(const std::string& conninfo) {
-    PGconn* c = PQconnectdb(conninfo.c_str());
-    if (c == nullptr || PQstatus(c) != CONNECTION_OK) {
-        std::string why = c != nullptr ? PQerrorMessage(c) : "out of memory";
+    std::string missing;
+    const LibPq* pq = load_libpq(missing);
+    if (pq == nullptr) {
+        return fail("cannot connect to PostgreSQL at '" + conninfo + "': " + missing);
+    }
+    PGconn* c = pq->connectdb(conninfo.c_str());
+    if (c == nullptr || pq->status(c) != CONNECTION_OK) {
+        std::string why = c != nullptr ? pq->errorMessage(c) : "out of memory";
         while (!why.empty() && (why.back() == '\n' || why.back() == ' ')) {
             why.pop_back();
         }
-        PQfinish(c);
+        pq->finish(c);
         return fail("cannot connect to PostgreSQL at '" + conninfo + "': " + why);
     }
     auto conn = std::make_unique<PgConnection>(c);
