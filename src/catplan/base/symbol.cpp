@@ -2,7 +2,6 @@
 
 #include "catplan/base/assert.hpp"
 
-#include <array>
 #include <atomic>
 #include <memory>
 #include <mutex>
@@ -20,7 +19,13 @@ constexpr std::uint32_t kMaxChunks = 1u << 20;
 
 // The chunk pointers (8 MB) are zero-initialized static storage, so that only the pages of the
 // chunks in use are ever touched: zeroing them when the table is made cost every process start.
-constinit std::array<std::atomic<std::string*>, kMaxChunks> chunk_table{};
+// Plain pointers read and written through std::atomic_ref: an array of a million std::atomic is
+// more than clang will evaluate as a constant initializer.
+std::string* chunk_table[kMaxChunks];
+
+std::atomic_ref<std::string*> chunk_pointer(std::uint32_t c) {
+    return std::atomic_ref<std::string*>(chunk_table[c]);
+}
 
 struct SymbolTable {
     std::mutex mutex;
@@ -33,10 +38,10 @@ struct SymbolTable {
         std::uint32_t id = size;
         std::uint32_t c = id >> kChunkBits;
         CATPLAN_ASSERT(c < kMaxChunks, "the symbol table is full");
-        std::string* chunk = chunk_table[c].load(std::memory_order_relaxed);
+        std::string* chunk = chunk_pointer(c).load(std::memory_order_relaxed);
         if (chunk == nullptr) {
             chunk = new std::string[kChunk]; // owned by the table for the life of the process
-            chunk_table[c].store(chunk, std::memory_order_release);
+            chunk_pointer(c).store(chunk, std::memory_order_release);
         }
         chunk[id & (kChunk - 1)] = std::string(text);
         ids.emplace(chunk[id & (kChunk - 1)], id);
@@ -65,7 +70,7 @@ std::string_view Symbol::str() const {
     if (id_ == 0) {
         return {};
     }
-    const std::string* chunk = chunk_table[id_ >> kChunkBits].load(std::memory_order_acquire);
+    const std::string* chunk = chunk_pointer(id_ >> kChunkBits).load(std::memory_order_acquire);
     return chunk[id_ & (kChunk - 1)];
 }
 
