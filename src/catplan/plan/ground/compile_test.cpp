@@ -80,6 +80,38 @@ TEST(Compile, StripsBlocksworldGroundsEveryMoveOfThreeBlocks) {
     }
 }
 
+// pickup(b) with a second kept block w that nothing in L or R touches: every image of w gives the
+// same transition, so w is loose and grounds to one representative, unless an attribute (the
+// label's variable) ties it to the state.
+DomainPtr blocks_with_witness(bool labelled) {
+    auto d = std::make_shared<Domain>(*blocks_domain(labelled));
+    const auto& s = d->schema;
+    ACSet l(s), r(s);
+    Part b = add_block(l, "b", true);
+    add_block(l, "w", true);
+    add_fact(l, kB.clear, kB.clear_of, b, "cb");
+    add_fact(l, kB.table, kB.table_of, b, "tb");
+    l.add_part(kB.hand, "he");
+    Part rb = add_block(r, "b", true);
+    add_block(r, "w", true);
+    add_fact(r, kB.holding, kB.held, rb, "h");
+    d->rules = {make_rule("pickup_beside", l, r, {"b", "w"})};
+    return d;
+}
+
+TEST(Compile, ALooseKeptPartGroundsToOneRepresentative) {
+    auto p = blocks_problem(blocks_with_witness(false), {"A", "B", "C"}, {{0}, {1}, {2}}, {{0}});
+    Task t = compiled(p);
+    // One action per picked block (three are clear on the table), not one per (b, w) pair.
+    ASSERT_EQ(t.actions.size(), 3u);
+    for (ActionId a = 0; a < t.actions.size(); ++a) {
+        EXPECT_EQ(t.actions[a].pre.size(), 3u) << t.describe_action(a); // clear, on table, hand
+    }
+    auto labelled =
+        blocks_problem(blocks_with_witness(true), {"A", "B", "C"}, {{0}, {1}, {2}}, {{0}});
+    EXPECT_EQ(compiled(labelled).actions.size(), 6u); // w's label variable is a cell it reads
+}
+
 TEST(Compile, ThePapersCaseStudyHasOneMarkerSlot) {
     auto p = paper_case_study();
     Task t = compiled(p);

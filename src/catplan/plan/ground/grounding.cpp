@@ -59,13 +59,14 @@ struct RuleShape {
     }
 };
 
-RuleShape shape_of(const Rule& rule, std::uint32_t index) {
+RuleShape shape_of(const Universe& u, const Rule& rule, std::uint32_t index) {
     const auto& s = rule.L.schema();
     RuleShape sh;
     sh.rule = &rule;
     sh.index = index;
     sh.pattern.p = &rule.L;
     sh.pattern.unread = unread_variables(rule.L, &rule);
+    sh.pattern.loose = loose_parts(u, rule);
     for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
         ObId ob(o);
         sh.k_of_l.emplace_back(rule.L.num_parts(ob), kNoPart);
@@ -138,7 +139,7 @@ public:
         : u_(u), s_(u.s), options_(options), task_(u.task) {
         const auto& rules = task_.problem->domain->rules;
         for (std::uint32_t i = 0; i < rules.size(); ++i) {
-            shapes_.push_back(shape_of(*rules[i], i));
+            shapes_.push_back(shape_of(u, *rules[i], i));
         }
     }
 

@@ -18,6 +18,9 @@ struct Anchor {
     ObId from_ob;
     Part from = 0;
     HomId hom;
+    // A loose part's partner: a part of another object with its name, whose image's name the
+    // loose part's image takes where it can, so that a parameter reads as one thing.
+    std::optional<std::pair<ObId, Part>> partner;
 };
 
 class Matcher {
@@ -47,6 +50,10 @@ private:
         return ob.index() < pat_.fixed.size() && pat_.fixed[ob.index()][p].id != kNone;
     }
 
+    bool is_loose(ObId ob, Part p) const {
+        return ob.index() < pat_.loose.size() && pat_.loose[ob.index()][p] != 0;
+    }
+
     int rank(ObId ob) const {
         switch (u_.kind[ob.index()]) {
         case ObKind::Atoms:
@@ -60,7 +67,8 @@ private:
     }
 
     // A breadth-first order over the pattern's parts along homs (both ways), fixed parts first,
-    // then each component from a part of the object most likely to have few candidates.
+    // then each component from a part of the object most likely to have few candidates, loose
+    // parts last (so that the first admissible image of one is as good as any).
     void plan_order() {
         std::vector<std::vector<char>> seen(s_.num_obs());
         std::deque<std::pair<ObId, Part>> queue;
@@ -82,12 +90,12 @@ private:
                 for (HomId f : s_.homs_from(ob)) {
                     Part t = p_.subpart(f, p);
                     if (t != kNoPart) {
-                        visit({Anchor::Kind::Forward, s_.hom(f).codom, t, ob, p, f});
+                        visit({Anchor::Kind::Forward, s_.hom(f).codom, t, ob, p, f, std::nullopt});
                     }
                 }
                 for (HomId f : s_.homs_into(ob)) {
                     for (Part q : p_.incident(f, p)) {
-                        visit({Anchor::Kind::Backward, s_.hom(f).dom, q, ob, p, f});
+                        visit({Anchor::Kind::Backward, s_.hom(f).dom, q, ob, p, f, std::nullopt});
                     }
                 }
             }
@@ -95,7 +103,7 @@ private:
         for (std::uint32_t o = 0; o < s_.num_obs(); ++o) {
             for (Part p = 0; p < p_.num_parts(ObId(o)); ++p) {
                 if (is_fixed(ObId(o), p)) {
-                    visit({Anchor::Kind::Fixed, ObId(o), p, ObId(o), p, HomId(0)});
+                    visit({Anchor::Kind::Fixed, ObId(o), p, ObId(o), p, HomId(0), std::nullopt});
                 }
             }
         }
@@ -107,11 +115,33 @@ private:
                     continue;
                 }
                 for (Part p = 0; p < p_.num_parts(ob); ++p) {
-                    visit({Anchor::Kind::Free, ob, p, ob, p, HomId(0)});
-                    drain();
+                    if (!is_loose(ob, p)) {
+                        visit({Anchor::Kind::Free, ob, p, ob, p, HomId(0), std::nullopt});
+                        drain();
+                    }
                 }
             }
         }
+        for (std::uint32_t o = 0; o < s_.num_obs(); ++o) {
+            for (Part p = 0; p < p_.num_parts(ObId(o)); ++p) {
+                visit({Anchor::Kind::Free, ObId(o), p, ObId(o), p, HomId(0), partner(ObId(o), p)});
+            }
+        }
+    }
+
+    std::optional<std::pair<ObId, Part>> partner(ObId ob, Part p) const {
+        std::string_view name = p_.part_name(ob, p);
+        if (!is_loose(ob, p) || name.empty()) {
+            return std::nullopt;
+        }
+        for (std::uint32_t o = 0; o < s_.num_obs(); ++o) {
+            for (Part q = 0; o != ob.index() && q < p_.num_parts(ObId(o)); ++q) {
+                if (!is_loose(ObId(o), q) && p_.part_name(ObId(o), q) == name) {
+                    return std::pair{ObId(o), q};
+                }
+            }
+        }
+        return std::nullopt;
     }
 
     // ---- facts ---------------------------------------------------------------------------------
@@ -183,12 +213,45 @@ private:
             return true;
         }
         case Anchor::Kind::Free:
+            if (is_loose(a.ob, a.part)) {
+                return loose(i, a);
+            }
             for (Image c : u_.candidates(a.ob)) {
                 if (!attempt(i, c)) {
                     return false;
                 }
             }
             return true;
+        }
+        return true;
+    }
+
+    // A loose part: the first free entity gives the same transition as every other, and one
+    // with fewer conditions than any slot; slots only when no entity is free.
+    bool loose(std::size_t i, const Anchor& a) {
+        Images cands = u_.candidates(a.ob);
+        if (a.partner) {
+            Image twin = m_.images[a.partner->first.index()][a.partner->second];
+            auto name = [&](Image c) {
+                const Object& obj = u_.task.objects[c.id];
+                return c.atom || c.id == kNone || obj.is_slot()
+                           ? std::string_view()
+                           : u_.task.problem->initial->part_name(obj.ob, obj.initial);
+            };
+            auto named_as_twin = [&](Image c) {
+                return !name(twin).empty() && name(c) == name(twin);
+            };
+            std::stable_partition(cands.begin(), cands.end(), named_as_twin);
+        }
+        for (Image c : cands) {
+            if (!u_.task.objects[c.id].is_slot() && admissible(a.ob, a.part, c)) {
+                return attempt(i, c);
+            }
+        }
+        for (Image c : cands) {
+            if (u_.task.objects[c.id].is_slot() && !attempt(i, c)) {
+                return false;
+            }
         }
         return true;
     }
@@ -428,6 +491,27 @@ bool carried(const Rule& rule, AttrTypeId ty, std::uint32_t v) {
     return false;
 }
 
+// Whether no hom or attribute of x touches part p of ob: none set from it, none points to it.
+bool untouched(const ACSet& x, ObId ob, Part p) {
+    const auto& s = x.schema();
+    for (HomId f : s.homs_from(ob)) {
+        if (x.subpart(f, p) != kNoPart) {
+            return false;
+        }
+    }
+    for (AttrId a : s.attrs_from(ob)) {
+        if (!x.subpart(a, p).is_unset()) {
+            return false;
+        }
+    }
+    for (HomId f : s.homs_into(ob)) {
+        if (!x.incident(f, p).empty()) {
+            return false;
+        }
+    }
+    return true;
+}
+
 } // namespace
 
 std::vector<std::vector<char>> unread_variables(const ACSet& p, const Rule* rule) {
@@ -461,6 +545,35 @@ std::vector<std::vector<char>> unread_variables(const ACSet& p, const Rule* rule
             }
             out[t][v] = read ? 0 : 1;
         }
+    }
+    return out;
+}
+
+std::vector<std::vector<char>> loose_parts(const Universe& u, const Rule& rule) {
+    const auto& s = u.s;
+    std::vector<std::vector<char>> out(s.num_obs());
+    bool any = false;
+    for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
+        ObId ob(o);
+        out[o].assign(rule.L.num_parts(ob), 0);
+        if (u.kind[o] == ObKind::Atoms || !rule.conditions.empty()) {
+            continue;
+        }
+        std::vector<Part> k_of_l(rule.L.num_parts(ob), kNoPart);
+        for (Part k = 0; k < rule.K.num_parts(ob); ++k) {
+            k_of_l[rule.l(ob, k)] = k;
+        }
+        for (Part l = 0; l < rule.L.num_parts(ob); ++l) {
+            Part k = k_of_l[l];
+            out[o][l] =
+                k != kNoPart && untouched(rule.L, ob, l) && untouched(rule.R, ob, rule.r(ob, k))
+                    ? 1
+                    : 0;
+            any = any || out[o][l] != 0;
+        }
+    }
+    if (!any) {
+        out.clear();
     }
     return out;
 }

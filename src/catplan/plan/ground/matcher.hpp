@@ -22,7 +22,16 @@ struct Pattern {
     /// Per attribute type, per variable of p: its value is read by nothing, so it binds kAny
     /// and its cell need only be set. Empty: every variable is read.
     std::vector<std::vector<char>> unread;
+    /// Per ob, per part: no hom, attribute or condition of the pattern constrains the part, so
+    /// every entity image gives the same transition; only the first free entity is visited
+    /// (every slot when none is free). Empty: none.
+    std::vector<std::vector<char>> loose;
 };
+
+/// The loose parts of a rule's L (Pattern::loose): kept parts of objects that no hom or attribute
+/// of L or R touches, of a rule without conditions. Applying the rule at matches that differ only
+/// there gives one transition.
+std::vector<std::vector<char>> loose_parts(const Universe& u, const Rule& rule);
 
 /// The unread variables of a pattern: those occurring in one cell only (for a rule's L, also
 /// not read by an expression, not carried to another cell, and the rule has no conditions).
