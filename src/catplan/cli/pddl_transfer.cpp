@@ -215,8 +215,12 @@ std::string pddl_steps_text(const TransferInputs& in, const transfer::TransferRe
                               pt.source->action_of(st.source.action));
             break;
         case transfer::StepTransfer::Kind::Repaired:
-            how = fmt::format("repaired: {} step{} ({} states expanded)", st.target_steps.size(),
-                              st.target_steps.size() == 1 ? "" : "s", st.repair_stats.expanded);
+            how = fmt::format(
+                "repaired: {} step{} ({})", st.target_steps.size(),
+                st.target_steps.size() == 1 ? "" : "s",
+                st.repair_reused_from
+                    ? fmt::format("step {}'s repair, renamed", *st.repair_reused_from + 1)
+                    : fmt::format("{} states expanded", st.repair_stats.expanded));
             break;
         }
         if (st.target_steps.empty()) {

@@ -66,7 +66,7 @@ ACSet induced(const ACSet& x, const std::vector<std::vector<char>>& keep) {
 
 } // namespace
 
-bool embeds_by_names(const NamedState& x, const ACSet& goal) {
+bool embeds_by_names(const NamedState& x, const ACSet& goal, const Result<Focus>* focus) {
     const auto& s = goal.schema();
     bool variables = false;
     for (std::uint32_t t = 0; t < s.num_attr_types(); ++t) {
@@ -75,7 +75,12 @@ bool embeds_by_names(const NamedState& x, const ACSet& goal) {
     if (!variables) {
         // Part by part (the seeds of a focus are exactly what differs by names), unless two facts
         // of the goal found the same fact of x.
-        auto f = Focus::of(x, goal);
+        std::optional<Result<Focus>> own;
+        if (focus == nullptr) {
+            own.emplace(Focus::of(x, goal));
+            focus = &*own;
+        }
+        const auto& f = *focus;
         if (f && !f->shared_fact()) {
             return f->seeds() == 0;
         }

@@ -1,4 +1,5 @@
 #include "catplan/transfer/focus.hpp"
+#include "catplan/transfer/repair_memo.hpp"
 
 #include <gtest/gtest.h>
 
@@ -116,6 +117,53 @@ TEST(Focus, ComparesByNamesAndSaysWhenItCannot) {
     auto g = Focus::of(y, stranger);
     ASSERT_FALSE(g);
     EXPECT_EQ(g.error(), "the subgoal's Block D has no namesake in the target state");
+}
+
+TEST(RepairMemo, ProblemsEqualUpToNamesShareAPlanRenamed) {
+    Blocks b;
+    // B on A, goal B on C; and, renamed by A->D, B->C, C->A, D->B: C on D, goal C on A.
+    ACSet i1 = b.state(4, {{0, 1}, {2}, {3}}), g1 = b.state(4, {{0}, {2, 1}, {3}});
+    ACSet i2 = b.state(4, {{3, 2}, {0}, {1}}), g2 = b.state(4, {{3}, {0, 2}, {1}});
+    auto s1 = repair_shape(i1, g1), s2 = repair_shape(i2, g2);
+    ASSERT_TRUE(s1 && s2);
+    EXPECT_EQ(s1->key, s2->key);
+    RepairMemo memo;
+    EXPECT_EQ(memo.find(*s2), nullptr);
+    memo.remember(*s1, {plan::Step{"move", {"B", "A", "C"}, {}}}, 4);
+    const auto* e = memo.find(*s2);
+    ASSERT_NE(e, nullptr);
+    EXPECT_TRUE(e->solved);
+    EXPECT_EQ(e->origin, 4u);
+    auto renamed = RepairMemo::renamed(*e, *s2);
+    ASSERT_EQ(renamed.size(), 1u);
+    EXPECT_EQ(renamed[0].to_string(), "move(C, D, A)");
+}
+
+TEST(RepairMemo, OtherShapesHaveOtherKeys) {
+    Blocks b;
+    ACSet i1 = b.state(4, {{0, 1}, {2}, {3}}), g1 = b.state(4, {{0}, {2, 1}, {3}});
+    // The same initial state, B to go on the table instead; then a tower of three.
+    ACSet g2 = b.state(4, {{0}, {1}, {2}, {3}});
+    ACSet i3 = b.state(4, {{0, 1, 2}, {3}}), g3 = b.state(4, {{0, 1}, {3, 2}});
+    auto s1 = repair_shape(i1, g1), s2 = repair_shape(i1, g2), s3 = repair_shape(i3, g3);
+    ASSERT_TRUE(s1 && s2 && s3);
+    EXPECT_NE(s1->key, s2->key);
+    EXPECT_NE(s1->key, s3->key);
+    RepairMemo memo;
+    memo.remember_failure(*s2, 1);
+    ASSERT_NE(memo.find(*s2), nullptr);
+    EXPECT_FALSE(memo.find(*s2)->solved);
+    EXPECT_EQ(memo.find(*s1), nullptr);
+    // A plan naming a block the problem does not have is not remembered.
+    memo.remember(*s3, {plan::Step{"move", {"C", "Z", "D"}, {}}}, 2);
+    EXPECT_EQ(memo.find(*s3), nullptr);
+}
+
+TEST(RepairMemo, APartWithoutANameHasNoShape) {
+    Blocks b;
+    ACSet i = b.state(2, {{0, 1}});
+    i.add_part(b.block);
+    EXPECT_FALSE(repair_shape(i, b.state(2, {{0}, {1}})));
 }
 
 } // namespace

@@ -89,14 +89,15 @@ bool binds_initial_parts(const plan::Domain& target, const ACSet& initial,
 Repairer::Repairer(plan::DomainPtr target, RepairOptions options)
     : target_(std::move(target)), options_(std::move(options)) {}
 
-Repair Repairer::repair(const NamedState& y, const ACSet& subgoal) {
+Repair Repairer::repair(const NamedState& y, const ACSet& subgoal, std::size_t step) {
     Repair out;
-    if (embeds_by_names(y, subgoal)) {
+    auto focus = Focus::of(y, subgoal);
+    if (embeds_by_names(y, subgoal, &focus)) {
         out.found = true;
         out.by_names = true;
         return out;
     }
-    if (focus_repair(y, subgoal, out)) {
+    if (focus && focus_repair(y, subgoal, *focus, step, out)) {
         return out;
     }
     if (embeds(subgoal, y.state())) {
@@ -126,9 +127,32 @@ plan::SearchResult Repairer::search_by_names(const plan::ProblemPtr& p,
     return plan::find_plan(*p, options);
 }
 
-bool Repairer::focus_repair(const NamedState& y, const ACSet& subgoal, Repair& out) {
-    auto focus = Focus::of(y, subgoal);
-    if (!focus || focus->seeds() == 0) {
+// The plan remembered for a focus of this shape, renamed and replayed on y; `searched_before`
+// says whether the shape was searched at all (a failed search need not be run again).
+bool Repairer::use_memo(const NamedState& y, const ACSet& subgoal, const RepairShape& shape,
+                        Repair& out, bool& searched_before) const {
+    const auto* e = memo_.find(shape);
+    searched_before = e != nullptr;
+    if (e == nullptr || !e->solved) {
+        return false;
+    }
+    auto steps = RepairMemo::renamed(*e, shape);
+    bool named = false;
+    auto matches = replay(*target_, y, steps, subgoal, true, named);
+    if (!matches) {
+        return false; // something outside the focus differs
+    }
+    out.found = true;
+    out.steps = std::move(steps);
+    out.matches = std::move(*matches);
+    out.by_names = true;
+    out.reused_from = e->origin;
+    return true;
+}
+
+bool Repairer::focus_repair(const NamedState& y, const ACSet& subgoal, const Focus& focus,
+                            std::size_t step, Repair& out) {
+    if (focus.seeds() == 0) {
         return false;
     }
     std::size_t searched = 0; // the parts of the last focus searched (a larger radius adds some)
@@ -137,7 +161,7 @@ bool Repairer::focus_repair(const NamedState& y, const ACSet& subgoal, Repair& o
         options.max_nodes = options_.focus_max_nodes;
     }
     for (std::size_t radius : options_.radii) {
-        auto fp = focus->problem(radius);
+        auto fp = focus.problem(radius);
         if (fp.whole) {
             return false; // the whole state is searched next
         }
@@ -150,11 +174,27 @@ bool Repairer::focus_repair(const NamedState& y, const ACSet& subgoal, Repair& o
         p->domain = target_;
         p->initial = std::make_shared<const ACSet>(std::move(fp.initial));
         p->goal = std::make_shared<const ACSet>(std::move(fp.goal));
+        auto shape = repair_shape(*p->initial, *p->goal);
+        bool searched_before = false;
+        if (shape && use_memo(y, subgoal, *shape, out, searched_before)) {
+            out.focus_parts = fp.parts;
+            return true;
+        }
+        if (searched_before) {
+            continue; // the same search, renamed, found nothing or nothing that replays here
+        }
         auto r = search_by_names(p, options);
         add_stats(out.stats, r.stats);
         if (r.status != plan::SearchStatus::Solved ||
             !binds_initial_parts(*target_, *p->initial, r.plan->steps)) {
+            if (shape && r.status != plan::SearchStatus::TimeLimit &&
+                r.status != plan::SearchStatus::MemoryLimit) {
+                memo_.remember_failure(*shape, step);
+            }
             continue;
+        }
+        if (shape) {
+            memo_.remember(*shape, r.plan->steps, step);
         }
         bool named = false;
         auto matches = replay(*target_, y, r.plan->steps, subgoal, true, named);

@@ -11,21 +11,24 @@
 // homs point into is its namesake, each fact is found by its arguments). Otherwise a repair costs
 // what the step touches, not the size of the state: the local plan is searched first on a focus
 // of Y_{i-1} (the parts near what the subgoal changes, radius 1, then 2, then 4), its goal reached
-// by names; a plan found there is replayed on the whole Y_{i-1} as DPO steps and the whole subgoal
-// is checked to hold by names in the result before it is used (one that fails, for a negative
-// condition or a dangling part the focus does not see, is set aside and the next focus tried).
-// Only when no focus gives a plan, and the subgoal does not embed in Y_{i-1} by another monic
-// morphism either, is the whole state searched: the target's ground task is compiled once per
-// transfer and searched from each state with its subgoal (plan/ground/reuse.hpp), else the
-// repair's own problem. Each search is the planner's (greedy best-first with h_FF by default,
-// within node and time limits).
+// by names, unless a focus of the same shape was searched before in this transfer: its plan,
+// renamed, is used then (repair_memo.hpp); a plan found there is replayed on the whole Y_{i-1} as
+// DPO steps and the whole subgoal is checked to hold by names in the result before it is used (one
+// that fails, for a negative condition or a dangling part the focus does not see, is set aside and
+// the next focus tried). Only when no focus gives a plan, and the subgoal does not embed in Y_{i-1}
+// by another monic morphism either, is the whole state searched: the target's ground task is
+// compiled once per transfer and searched from each state with its subgoal (plan/ground/reuse.hpp),
+// else the repair's own problem. Each search is the planner's (greedy best-first with h_FF by
+// default, within node and time limits).
 
 #include "catplan/acset/acset.hpp"
 #include "catplan/hom/morphism.hpp"
 #include "catplan/plan/domain.hpp"
 #include "catplan/plan/ground/reuse.hpp"
 #include "catplan/plan/search.hpp"
+#include "catplan/transfer/focus.hpp"
 #include "catplan/transfer/named_state.hpp"
+#include "catplan/transfer/repair_memo.hpp"
 
 #include <cstddef>
 #include <cstdint>
@@ -66,6 +69,9 @@ struct Repair {
     /// The subgoal embeds in the state the steps reach sending each part that homs point into to
     /// its namesake (else by another monic morphism).
     bool by_names = false;
+    /// The plan is that of the repair of this earlier source step, renamed: its focus had the
+    /// same shape (repair_memo.hpp), so no search was needed.
+    std::optional<std::size_t> reused_from;
     std::string why; ///< when not found: "the subgoal is unreachable", "time limit reached"
 };
 
@@ -74,11 +80,15 @@ class Repairer {
 public:
     Repairer(plan::DomainPtr target, RepairOptions options);
 
-    /// A plan in the target domain from y to a state into which subgoal embeds monically.
-    Repair repair(const NamedState& y, const acset::ACSet& subgoal);
+    /// A plan in the target domain from y to a state into which subgoal embeds monically, for
+    /// source step `step` (a later repair of the same shape names it as the one it reuses).
+    Repair repair(const NamedState& y, const acset::ACSet& subgoal, std::size_t step);
 
 private:
-    bool focus_repair(const NamedState& y, const acset::ACSet& subgoal, Repair& out);
+    bool focus_repair(const NamedState& y, const acset::ACSet& subgoal, const Focus& focus,
+                      std::size_t step, Repair& out);
+    bool use_memo(const NamedState& y, const acset::ACSet& subgoal, const RepairShape& shape,
+                  Repair& out, bool& searched_before) const;
     void whole_repair(const NamedState& y, const acset::ACSet& subgoal, Repair& out);
     plan::SearchResult search_by_names(const plan::ProblemPtr& p,
                                        const plan::SearchOptions& options) const;
@@ -88,6 +98,7 @@ private:
     /// The target's ground task, compiled at the first repair on the whole state.
     std::optional<plan::ground::ReusableTask> task_;
     std::string why_no_task_; ///< why it could not be compiled (then each repair compiles its own)
+    RepairMemo memo_;         ///< the plans of the focuses searched, by shape
 };
 
 } // namespace catplan::transfer

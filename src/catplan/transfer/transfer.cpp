@@ -422,7 +422,7 @@ private:
         if (!repairer_) {
             repairer_.emplace(own.domain, options_.repair);
         }
-        auto repair = repairer_->repair(*y_, subgoal);
+        auto repair = repairer_->repair(*y_, subgoal, i);
         if (!repair.found) {
             return fail_at(i, fmt::format("{}; repair: {}",
                                           c == nullptr ? "no target action corresponds"
@@ -447,6 +447,7 @@ private:
         st.target_steps = std::move(repair.steps);
         st.repair_stats = repair.stats;
         st.repair_focus = repair.focus_parts;
+        st.repair_reused_from = repair.reused_from;
         return true;
     }
 

@@ -1,0 +1,70 @@
+#pragma once
+// Repairs already found, by the shape of their focused problem (focus.hpp), so that a transfer
+// searches each kind of repair once: the thirty `move`s of a 3-operator blocks-world plan carried
+// into the 4-operator domain are a handful of shapes (from a block to a block, from the table to
+// a block, ...), and each later one takes the plan of the first, renamed.
+//
+// The shape of a focused problem (its initial state and its goal, whose parts that homs point into
+// are named as their namesakes in the initial state) is the problem with those names replaced by
+// numbers: each name gets a colour from the facts, homs and attribute values it takes part in,
+// refined a few rounds as in colour refinement (Weisfeiler-Leman), and the names are numbered in
+// the order of their colours. Two problems of one shape are the same problem up to renaming, so
+// the plan of one, renamed, is a plan of the other. Names that the colours do not tell apart are
+// numbered in the order they come in, so that two problems of one shape may still get two keys
+// (the memo then misses, and searches); a key is never shared by problems of different shapes.
+// Whatever the memo gives is replayed on the whole target state and the subgoal checked
+// (repair.cpp), as any plan a search found.
+
+#include "catplan/acset/acset.hpp"
+#include "catplan/plan/domain.hpp"
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <unordered_map>
+#include <vector>
+
+namespace catplan::transfer {
+
+/// A focused problem up to the names of its parts.
+struct RepairShape {
+    std::string key;                     ///< the same for problems equal up to renaming
+    std::vector<std::string_view> names; ///< per number, the name it stands for here
+    std::unordered_map<std::string_view, std::uint32_t> number; ///< per name, its number
+};
+
+/// The shape of a repair's problem, or nullopt when a part that homs point into has no name
+/// (or a goal part no namesake in the initial state).
+std::optional<RepairShape> repair_shape(const acset::ACSet& initial, const acset::ACSet& goal);
+
+class RepairMemo {
+public:
+    /// What a search of one shape gave: a plan, or none (unsolvable within the focus's limits).
+    struct Entry {
+        bool solved = false;
+        std::size_t origin = 0; ///< the number of the repair that searched it
+        std::vector<std::string> actions;
+        std::vector<std::vector<std::uint32_t>> args; ///< per step, its arguments' numbers
+    };
+
+    /// The entry of this shape, or nullptr.
+    const Entry* find(const RepairShape& shape) const;
+
+    /// Remembers a plan of the shape (its arguments named as shape.names says); a plan with an
+    /// argument that is none of those names is not remembered.
+    void remember(const RepairShape& shape, const std::vector<plan::Step>& steps,
+                  std::size_t origin);
+
+    /// Remembers that the search of the shape found no plan.
+    void remember_failure(const RepairShape& shape, std::size_t origin);
+
+    /// The entry's plan with the names of `shape`.
+    static std::vector<plan::Step> renamed(const Entry& e, const RepairShape& shape);
+
+private:
+    std::unordered_map<std::string, Entry> entries_;
+};
+
+} // namespace catplan::transfer
