@@ -10,9 +10,9 @@
 // No step is needed when Y_{i-1} already holds the subgoal by names (focus.hpp: each part that
 // homs point into is its namesake, each fact is found by its arguments). Otherwise a repair costs
 // what the step touches, not the size of the state: the local plan is searched first on a focus
-// of Y_{i-1} (the parts near what the subgoal changes, radius 1, then 2, then 4), its goal reached
-// by names, unless a focus of the same shape was searched before in this transfer: its plan,
-// renamed, is used then (repair_memo.hpp); a plan found there is replayed on the whole Y_{i-1} as
+// of Y_{i-1} (the parts near what the subgoal changes: radius 0, the seeds alone, then 1, 2 and
+// 4), its goal reached by names, unless a focus of the same shape was searched before in this
+// transfer: its plan, renamed, is used then (repair_memo.hpp); a plan found there is replayed on the whole Y_{i-1} as
 // DPO steps and the whole subgoal is checked to hold by names in the result before it is used (one
 // that fails, for a negative condition or a dangling part the focus does not see, is set aside and
 // the next focus tried). Only when no focus gives a plan, and the subgoal does not embed in Y_{i-1}
@@ -50,7 +50,7 @@ struct RepairOptions {
     }();
     /// The radii of the focuses searched before the whole state, in order (empty: the whole
     /// state only).
-    std::vector<std::size_t> radii = {1, 2, 4};
+    std::vector<std::size_t> radii = {0, 1, 2, 4};
     /// At most this many expansions on a focus (a focus that needs more is not local, and the
     /// next one, or the whole state, is searched), within the search's own limit.
     std::uint64_t focus_max_nodes = 10000;
