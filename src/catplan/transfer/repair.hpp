@@ -12,14 +12,14 @@
 // what the step touches, not the size of the state: the local plan is searched first on a focus
 // of Y_{i-1} (the parts near what the subgoal changes: radius 0, the seeds alone, then 1, 2 and
 // 4), its goal reached by names, unless a focus of the same shape was searched before in this
-// transfer: its plan, renamed, is used then (repair_memo.hpp); a plan found there is replayed on the whole Y_{i-1} as
-// DPO steps and the whole subgoal is checked to hold by names in the result before it is used (one
-// that fails, for a negative condition or a dangling part the focus does not see, is set aside and
-// the next focus tried). Only when no focus gives a plan, and the subgoal does not embed in Y_{i-1}
-// by another monic morphism either, is the whole state searched: the target's ground task is
-// compiled once per transfer and searched from each state with its subgoal (plan/ground/reuse.hpp),
-// else the repair's own problem. Each search is the planner's (greedy best-first with h_FF by
-// default, within node and time limits).
+// transfer: its plan, renamed, is used then (repair_memo.hpp); a plan found there is replayed on
+// the whole Y_{i-1} as DPO steps and the whole subgoal is checked to hold by names in the result
+// before it is used (one that fails, for a negative condition or a dangling part the focus does not
+// see, is set aside and the next focus tried). Only when no focus gives a plan, and the subgoal
+// does not embed in Y_{i-1} by another monic morphism either, is the whole state searched: the
+// target's ground task is compiled once per transfer and searched from each state with its subgoal
+// (plan/ground/reuse.hpp), else the repair's own problem. Each search is the planner's (greedy
+// best-first with h_FF by default, within node and time limits).
 
 #include "catplan/acset/acset.hpp"
 #include "catplan/hom/morphism.hpp"
