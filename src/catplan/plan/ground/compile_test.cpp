@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <fmt/format.h>
 #include <functional>
 #include <limits>
 #include <set>
@@ -176,8 +177,8 @@ TEST(MutexGroups, BlocksworldHasTheTranslatorsGroups) {
         std::set<std::string> top = {"Holding(" + x + ")", "Clear(" + x + ")"};
         for (std::string y : {"A", "B", "C"}) {
             if (y != x) {
-                where.insert("On(" + x + ", " + y + ")");
-                top.insert("On(" + y + ", " + x + ")");
+                where.insert(fmt::format("On({}, {})", x, y));
+                top.insert(fmt::format("On({}, {})", y, x));
             }
         }
         expected.insert(where);
