@@ -146,6 +146,14 @@ nlohmann::ordered_json steps_json(const TransferInputs& in, const transfer::Tran
              {"carried_out_by", kind_name(st.kind)},
              {"target", targets},
              {"lost_parameters", st.lost_parameters}});
+        if (st.kind == transfer::StepTransfer::Kind::Repaired) {
+            out.back()["repair"] = {
+                {"expanded", st.repair_stats.expanded},
+                {"focus_parts", st.repair_focus},
+                {"reused_from", st.repair_reused_from
+                                    ? nlohmann::ordered_json(*st.repair_reused_from + 1)
+                                    : nlohmann::ordered_json(nullptr)}};
+        }
     }
     return out;
 }
