@@ -24,7 +24,6 @@ set(catplan_layer_targets "")
 # an error here rather than a package that fails in a consumer.
 set(CATPLAN_FIND_fmt::fmt "find_dependency(fmt)")
 set(CATPLAN_FIND_nlohmann_json::nlohmann_json "find_dependency(nlohmann_json)")
-set(CATPLAN_FIND_SQLite::SQLite3 "find_dependency(SQLite3)")
 set(CATPLAN_FIND_DEPENDENCIES "")
 foreach(layer ${catplan_layers})
     list(APPEND catplan_layer_targets catplan_${layer})
