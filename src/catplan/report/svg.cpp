@@ -33,8 +33,11 @@
 #if defined(CATPLAN_HAVE_GVC) && defined(CATPLAN_ASAN)
 // Graphviz 2.42 and the font libraries under it (fontconfig, pango, glib, cairo) keep caches and
 // leak small blocks on every layout; LeakSanitizer in our sanitizer builds would fail every
-// program that draws. Only leaks allocated inside those libraries are suppressed.
+// program that draws. Only leaks allocated inside those libraries are suppressed. The names are
+// the sanitizer runtime's hooks, reserved identifiers by design.
+// NOLINTNEXTLINE(bugprone-reserved-identifier)
 extern "C" const char* __lsan_default_suppressions();
+// NOLINTNEXTLINE(bugprone-reserved-identifier)
 extern "C" const char* __lsan_default_options();
 
 // Without this, every run that draws ends with LeakSanitizer's table of suppressed leaks.
