@@ -6,6 +6,7 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <string>
 
 namespace catplan {
@@ -91,6 +92,43 @@ TEST(Unicode, IdentifiersAreLettersDigitsMarksAndUnderscore) {
     EXPECT_TRUE(is_identifier_continue(U'\u0308')); // combining diaeresis
     EXPECT_FALSE(is_identifier_continue(U'🍞'));
     EXPECT_FALSE(is_identifier_continue(U'-'));
+    EXPECT_EQ(identifier_classes_unavailable(), ""); // ICU is installed where the tests run
+}
+
+TEST(Unicode, AsciiIsDecidedWithoutIcuAsIcuWouldDecideIt) {
+    for (char32_t c = 0; c < 0x80; ++c) {
+        bool letter = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z');
+        bool digit = c >= '0' && c <= '9';
+        EXPECT_EQ(is_identifier_start(c), letter || c == '_') << static_cast<int>(c);
+        EXPECT_EQ(is_identifier_continue(c), letter || digit || c == '_') << static_cast<int>(c);
+    }
+}
+
+// Whether ICU's library is mapped into this process.
+bool icu_is_loaded() {
+    std::ifstream maps("/proc/self/maps");
+    std::string line;
+    while (std::getline(maps, line)) {
+        if (line.find("libicuuc") != std::string::npos) {
+            return true;
+        }
+    }
+    return false;
+}
+
+TEST(Unicode, IcuIsLoadedAtTheFirstCodePointBeyondAsciiOnly) {
+    // A fresh process (the test binary run again for this test alone), so that no earlier test
+    // has loaded ICU.
+    GTEST_FLAG_SET(death_test_style, "threadsafe");
+    EXPECT_EXIT(
+        {
+            bool ascii = is_identifier_start(U'a') && is_identifier_continue(U'9') &&
+                         !is_identifier_start(U'1') && is_valid_utf8("Größe → x");
+            bool before = icu_is_loaded();
+            bool lambda = is_identifier_start(U'λ');
+            std::exit(ascii && !before && lambda && icu_is_loaded() ? 0 : 1);
+        },
+        ::testing::ExitedWithCode(0), "");
 }
 
 TEST(Unicode, CheckReportsEachIllFormedRunOnceAndCapsTheList) {

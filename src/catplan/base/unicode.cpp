@@ -1,12 +1,54 @@
 #include "catplan/base/unicode.hpp"
 
+#include "catplan/base/dynamic_library.hpp"
+
 #include <algorithm>
 #include <fmt/format.h>
 #include <unicode/uchar.h>
 #include <unicode/utf8.h>
+#include <unicode/uvernum.h>
 #include <vector>
 
+// A macro's value as a string literal (two steps, so that the macro is expanded first).
+#define CATPLAN_ICU_STRING(x) CATPLAN_ICU_STRING_OF(x)
+#define CATPLAN_ICU_STRING_OF(x) #x
+
 namespace catplan {
+namespace {
+
+// ICU is loaded at the first code point beyond ASCII whose class is asked: most inputs are
+// ASCII, and libicuuc with its data cost every command a millisecond of start-up when linked.
+// The decoder (U8_NEXT) is an inline macro of ICU's header and needs no library.
+struct Icu {
+    decltype(&::u_hasBinaryProperty) has_binary_property = nullptr;
+};
+
+// ICU's functions are exported under versioned names (u_hasBinaryProperty_72, by the macros of
+// urename.h) and its soname carries the major version: both are spelled from the header's own
+// macros, so that they follow the ICU catplan is built with.
+void bind_icu(SymbolBinder& b, Icu& icu) {
+    b.function(icu.has_binary_property, CATPLAN_ICU_STRING(u_hasBinaryProperty));
+}
+
+LazyLibrary<Icu>& icu() {
+    static LazyLibrary<Icu> lib(
+        "libicuuc.so." CATPLAN_ICU_STRING(U_ICU_VERSION_MAJOR_NUM),
+        "ICU (Debian's libicu" CATPLAN_ICU_STRING(U_ICU_VERSION_MAJOR_NUM) ")", bind_icu);
+    return lib;
+}
+
+// Whether c has the binary property p; false when ICU cannot be loaded.
+bool has_property(char32_t c, UProperty p) {
+    std::string why;
+    const Icu* f = icu().load(why);
+    return f != nullptr && f->has_binary_property(static_cast<UChar32>(c), p);
+}
+
+bool is_ascii_letter(char32_t c) {
+    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z');
+}
+
+} // namespace
 
 CodePoint decode_utf8(std::string_view text, std::size_t i) {
     auto c = static_cast<unsigned char>(text[i]);
@@ -39,11 +81,23 @@ bool is_valid_utf8(std::string_view text) {
 }
 
 bool is_identifier_start(char32_t c) {
-    return c == '_' || u_hasBinaryProperty(static_cast<UChar32>(c), UCHAR_XID_START);
+    if (c < 0x80) {
+        return c == '_' || is_ascii_letter(c);
+    }
+    return has_property(c, UCHAR_XID_START);
 }
 
 bool is_identifier_continue(char32_t c) {
-    return u_hasBinaryProperty(static_cast<UChar32>(c), UCHAR_XID_CONTINUE);
+    if (c < 0x80) {
+        return c == '_' || is_ascii_letter(c) || (c >= '0' && c <= '9');
+    }
+    return has_property(c, UCHAR_XID_CONTINUE);
+}
+
+std::string identifier_classes_unavailable() {
+    std::string why;
+    static_cast<void>(icu().load(why));
+    return why;
 }
 
 bool check_utf8(const SourceManager& sources, std::uint32_t file, DiagnosticSink& sink) {

@@ -6,13 +6,16 @@
 // An identifier starts with `_` or a code point of XID_Start (the letters: Unicode categories Lu,
 // Ll, Lt, Lm, Lo and the letter numbers Nl) and goes on with XID_Continue (also the digits Nd,
 // the combining marks Mn and Mc, the connector punctuation Pc such as `_`). Emoji, symbols and
-// punctuation are in neither class. ICU answers the property look-ups.
+// punctuation are in neither class. ASCII is answered here; ICU answers the property look-ups
+// of other code points, loaded at the first one (its library is not linked). Where ICU cannot be
+// loaded, no such code point is in either class, and identifier_classes_unavailable says why.
 
 #include "catplan/base/diagnostic.hpp"
 #include "catplan/base/source.hpp"
 
 #include <cstddef>
 #include <cstdint>
+#include <string>
 #include <string_view>
 
 namespace catplan {
@@ -36,6 +39,10 @@ bool is_identifier_start(char32_t c);
 
 /// Whether c may go on an identifier: XID_Continue (which holds `_` and the digits).
 bool is_identifier_continue(char32_t c);
+
+/// Why the identifier classes of code points beyond ASCII are unknown (ICU cannot be loaded),
+/// empty when they are known; tries to load ICU.
+std::string identifier_classes_unavailable();
 
 /// Reports every ill-formed UTF-8 sequence of a buffer as a located error (the first ten, then a
 /// count of the rest, so a binary file gives a short answer); returns whether there was none.

@@ -158,11 +158,19 @@ private:
         // One code point, so the caret covers the whole character.
         CodePoint cp = decode_utf8(text_, i_);
         i_ += cp.length;
-        sink_.error(range(b, i_),
-                    c < 0x80 ? fmt::format("unexpected character '{}'", text_.substr(b, i_ - b))
-                             : fmt::format("unexpected character '{}' (U+{:04X})",
-                                           text_.substr(b, i_ - b),
-                                           static_cast<std::uint32_t>(cp.value)));
+        if (c < 0x80) {
+            sink_.error(range(b, i_),
+                        fmt::format("unexpected character '{}'", text_.substr(b, i_ - b)));
+            return;
+        }
+        // Without ICU no character beyond ASCII is known to be a letter: say so, rather than
+        // calling a name's letter unexpected.
+        std::string unknown = identifier_classes_unavailable();
+        sink_.error(
+            range(b, i_),
+            fmt::format("unexpected character '{}' (U+{:04X}){}", text_.substr(b, i_ - b),
+                        static_cast<std::uint32_t>(cp.value),
+                        unknown.empty() ? "" : "; letters beyond ASCII are unknown: " + unknown));
     }
 
     void comment() {

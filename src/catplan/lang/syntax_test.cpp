@@ -2,6 +2,10 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdlib>
+#include <fstream>
+#include <string>
+
 namespace catplan::lang {
 namespace {
 
@@ -227,6 +231,34 @@ TEST(Lexer, IdentifiersHoldLettersAsUnicodeDefinesThem) {
     EXPECT_NE(emoji.sink.render().find("t.cp:1:6: error: unexpected character '🍞' (U+1F35E)"),
               std::string::npos)
         << emoji.sink.render();
+}
+
+// Whether ICU's library is mapped into this process (it is loaded at the first letter beyond
+// ASCII, not linked).
+bool icu_is_loaded() {
+    std::ifstream maps("/proc/self/maps");
+    std::string line;
+    while (std::getline(maps, line)) {
+        if (line.find("libicuuc") != std::string::npos) {
+            return true;
+        }
+    }
+    return false;
+}
+
+TEST(Lexer, NeedsIcuOnlyForLettersBeyondAscii) {
+    // A fresh process (the test binary run again for this test alone): no earlier test has
+    // loaded ICU. Operators, strings and comments beyond ASCII do not need it.
+    GTEST_FLAG_SET(death_test_style, "threadsafe");
+    EXPECT_EXIT(
+        {
+            Lexed ascii("# Größe\nf::Hom(A, B) == g ⋅ h → k; c = \"grün\" #= ∀ =#\n");
+            bool without = !ascii.sink.has_errors() && !icu_is_loaded();
+            Lexed letters("Größe::Ob");
+            bool with = !letters.sink.has_errors() && icu_is_loaded();
+            std::exit(without && with ? 0 : 1);
+        },
+        ::testing::ExitedWithCode(0), "");
 }
 
 TEST(Lexer, RejectsInvalidUtf8BeforeAnythingElse) {

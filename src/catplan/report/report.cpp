@@ -85,7 +85,8 @@ public:
         if (it == cache_.end()) {
             auto svg = renderer_.render(dot);
             cache_.emplace_back(dot, svg ? *svg : std::string());
-            if (!svg) {
+            // One line per reason: without Graphviz every picture fails for the same one.
+            if (!svg && std::find(errors_.begin(), errors_.end(), svg.error()) == errors_.end()) {
                 errors_.push_back(svg.error());
             }
             it = std::prev(cache_.end());

@@ -1,5 +1,7 @@
 #include "catplan/report/svg.hpp"
 
+#include "catplan/base/dynamic_library.hpp"
+
 #include <atomic>
 #include <cstdio>
 #include <cstdlib>
@@ -31,8 +33,11 @@
 #if defined(CATPLAN_HAVE_GVC) && defined(CATPLAN_ASAN)
 // Graphviz 2.42 and the font libraries under it (fontconfig, pango, glib, cairo) keep caches and
 // leak small blocks on every layout; LeakSanitizer in our sanitizer builds would fail every
-// program that draws. Only leaks allocated inside those libraries are suppressed.
+// program that draws. Only leaks allocated inside those libraries are suppressed. The names are
+// the sanitizer runtime's hooks, reserved identifiers by design.
+// NOLINTNEXTLINE(bugprone-reserved-identifier)
 extern "C" const char* __lsan_default_suppressions();
+// NOLINTNEXTLINE(bugprone-reserved-identifier)
 extern "C" const char* __lsan_default_options();
 
 // Without this, every run that draws ends with LeakSanitizer's table of suppressed leaks.
@@ -52,6 +57,56 @@ namespace catplan::report {
 
 namespace {
 
+// Graphviz's two libraries are loaded at the first picture rather than linked: with what they
+// bring (cdt, pathplan, ltdl, expat, zlib) they cost every catplan command two milliseconds of
+// start-up, and only the report draws. The types are those of Graphviz's headers
+// (libgraphviz-dev); the sonames are those of Debian's libgvc6 and libcgraph6.
+struct Gvc {
+    decltype(&::gvContext) context = nullptr;
+    decltype(&::gvLayout) layout = nullptr;
+    decltype(&::gvRenderData) render_data = nullptr;
+    decltype(&::gvFreeRenderData) free_render_data = nullptr;
+    decltype(&::gvFreeLayout) free_layout = nullptr;
+};
+
+struct Cgraph {
+    decltype(&::agread) read = nullptr;
+    decltype(&::agseterr) seterr = nullptr;
+    decltype(&::agseterrf) seterrf = nullptr;
+    decltype(&::agclose) close = nullptr;
+    Agmemdisc_t* mem_disc = nullptr; // AgMemDisc: Graphviz's own allocator
+    Agiodisc_t* io_disc = nullptr;   // AgIoDisc: its output functions
+};
+
+void bind_gvc(SymbolBinder& b, Gvc& f) {
+    b.function(f.context, "gvContext");
+    b.function(f.layout, "gvLayout");
+    b.function(f.render_data, "gvRenderData");
+    b.function(f.free_render_data, "gvFreeRenderData");
+    b.function(f.free_layout, "gvFreeLayout");
+}
+
+void bind_cgraph(SymbolBinder& b, Cgraph& f) {
+    b.function(f.read, "agread");
+    b.function(f.seterr, "agseterr");
+    b.function(f.seterrf, "agseterrf");
+    b.function(f.close, "agclose");
+    b.data(f.mem_disc, "AgMemDisc");
+    b.data(f.io_disc, "AgIoDisc");
+}
+
+// Both libraries, loaded on the first call; false, with the reason in `why`, when one of them
+// or one of their symbols cannot be found.
+bool load_graphviz(const Gvc*& gvc, const Cgraph*& cgraph, std::string& why) {
+    static LazyLibrary<Gvc> gvc_lib("libgvc.so.6", "Graphviz's libgvc (Debian's libgvc6)",
+                                    bind_gvc);
+    static LazyLibrary<Cgraph> cgraph_lib(
+        "libcgraph.so.6", "Graphviz's libcgraph (Debian's libcgraph6)", bind_cgraph);
+    gvc = gvc_lib.load(why);
+    cgraph = gvc != nullptr ? cgraph_lib.load(why) : nullptr;
+    return cgraph != nullptr;
+}
+
 // Graphviz reports problems through a global callback; the renderer collects them per call.
 std::string* g_errors = nullptr;
 
@@ -67,8 +122,8 @@ int collect_error(char* message) {
 // The mutex serialises renderers (the context and the error callback are not thread-safe).
 std::mutex g_mutex;
 
-GVC_t* shared_context() {
-    static GVC_t* gvc = gvContext();
+GVC_t* shared_context(const Gvc& gv) {
+    static GVC_t* gvc = gv.context();
     return gvc;
 }
 
@@ -152,11 +207,11 @@ int text_read(void* chan, char* buf, int size) {
     return static_cast<int>(n);
 }
 
-Agraph_t* read_graph(std::string_view dot) {
-    static Agiodisc_t io = {text_read, AgIoDisc.putstr, AgIoDisc.flush};
-    static Agdisc_t disc = {&AgMemDisc, &g_read_order_ids, &io};
+Agraph_t* read_graph(const Cgraph& cg, std::string_view dot) {
+    static Agiodisc_t io = {text_read, cg.io_disc->putstr, cg.io_disc->flush};
+    static Agdisc_t disc = {cg.mem_disc, &g_read_order_ids, &io};
     TextChannel chan{dot};
-    return agread(&chan, &disc);
+    return cg.read(&chan, &disc);
 }
 
 } // namespace
@@ -168,37 +223,49 @@ SvgRenderer::SvgRenderer() : impl_(std::make_unique<Impl>()) {}
 SvgRenderer::~SvgRenderer() = default;
 
 Result<std::string> SvgRenderer::render(std::string_view dot) {
+    const Gvc* gv = nullptr;
+    const Cgraph* cg = nullptr;
+    std::string missing;
+    if (!load_graphviz(gv, cg, missing)) {
+        return fail(missing);
+    }
     std::lock_guard lock(g_mutex);
-    GVC_t* gvc = shared_context();
+    GVC_t* gvc = shared_context(*gv);
     std::string errors;
     g_errors = &errors;
-    agseterr(AGERR);
-    agseterrf(collect_error);
+    cg->seterr(AGERR);
+    cg->seterrf(collect_error);
     Result<std::string> out = fail("");
-    if (Agraph_t* g = read_graph(dot); g == nullptr) {
+    if (Agraph_t* g = read_graph(*cg, dot); g == nullptr) {
         out = fail("Graphviz could not read the picture: " + errors);
     } else {
-        if (gvLayout(gvc, g, "dot") != 0) {
+        if (gv->layout(gvc, g, "dot") != 0) {
             out = fail("Graphviz could not lay the picture out: " + errors);
         } else {
             char* data = nullptr;
             unsigned int length = 0;
-            if (gvRenderData(gvc, g, "svg", &data, &length) == 0 && data != nullptr) {
+            if (gv->render_data(gvc, g, "svg", &data, &length) == 0 && data != nullptr) {
                 out = std::string(data, length);
             } else {
                 out = fail("Graphviz could not render SVG: " + errors);
             }
-            gvFreeRenderData(data);
-            gvFreeLayout(gvc, g);
+            gv->free_render_data(data);
+            gv->free_layout(gvc, g);
         }
-        agclose(g);
+        cg->close(g);
     }
-    agseterrf(nullptr);
+    cg->seterrf(nullptr);
     g_errors = nullptr;
     return out;
 }
 
 std::string SvgRenderer::backend() {
+    const Gvc* gv = nullptr;
+    const Cgraph* cg = nullptr;
+    std::string missing;
+    if (!load_graphviz(gv, cg, missing)) {
+        return "nothing (Graphviz's libraries cannot be loaded)";
+    }
     return fmt::format("libgvc {}", PACKAGE_VERSION);
 }
 

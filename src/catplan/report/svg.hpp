@@ -1,7 +1,8 @@
 #pragma once
 // DOT to SVG for pages that inline their pictures. Graphviz's library (libgvc) lays the graph out
-// in-process when catplan was built with it (CATPLAN_HAVE_GVC); otherwise the `dot` program is
-// run, and its absence is an error that says so.
+// in-process when catplan was built with its header (CATPLAN_HAVE_GVC); it is loaded at the first
+// picture, and when it cannot be, every picture is a failure that says why. Built without the
+// header, the `dot` program is run, and its absence is an error that says so.
 //
 //   SvgRenderer r;
 //   auto svg = r.render(dot::schema_to_dot(*schema));
@@ -26,7 +27,8 @@ public:
     /// The SVG document Graphviz's dot layout makes of `dot`, or why there is none.
     Result<std::string> render(std::string_view dot);
 
-    /// "libgvc <version>" or "dot program": how pictures are made, for the page's footer.
+    /// "libgvc <version>" or "dot program" (or why neither): how pictures are made, for the
+    /// page's footer.
     static std::string backend();
 
 private:

@@ -1,7 +1,7 @@
 // libpq (Debian's libpq5), loaded when the first PostgreSQL connection is opened rather than
 // linked: its dependencies (Kerberos, LDAP, TLS: some twenty libraries) cost every catplan
-// command about 7 ms of start-up, and only `postgresql://` URLs need it. The header is libpq's
-// own, so the functions keep their types.
+// command about 7 ms of start-up, and only `postgresql://` URLs need it (base/dynamic_library.hpp
+// loads it). The header is libpq's own, so the functions keep their types.
 #pragma once
 
 #include <libpq-fe.h>
