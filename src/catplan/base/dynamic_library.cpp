@@ -1,6 +1,7 @@
 #include "catplan/base/dynamic_library.hpp"
 
 #include <dlfcn.h>
+#include <fstream>
 #include <utility>
 
 namespace catplan {
@@ -24,6 +25,17 @@ void* SymbolBinder::address(const char* symbol) {
         why_ = name_ + " has no symbol " + symbol;
     }
     return a;
+}
+
+bool library_is_mapped(std::string_view name) {
+    std::ifstream maps("/proc/self/maps");
+    std::string line;
+    while (std::getline(maps, line)) {
+        if (line.find(name) != std::string::npos) {
+            return true;
+        }
+    }
+    return false;
 }
 
 } // namespace catplan

@@ -20,6 +20,7 @@
 
 #include <mutex>
 #include <string>
+#include <string_view>
 #include <type_traits>
 
 namespace catplan {
@@ -113,5 +114,9 @@ private:
     Symbols symbols_{};
     std::string why_;
 };
+
+/// Whether a library whose file name contains `name` ("libicuuc") is mapped into this process
+/// (read from /proc/self/maps): what tests ask to see that a library was not loaded early.
+bool library_is_mapped(std::string_view name);
 
 } // namespace catplan

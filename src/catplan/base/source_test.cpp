@@ -1,4 +1,5 @@
 #include "catplan/base/diagnostic.hpp"
+#include "catplan/base/dynamic_library.hpp"
 #include "catplan/base/source.hpp"
 #include "catplan/base/unicode.hpp"
 
@@ -6,7 +7,6 @@
 
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <string>
 
 namespace catplan {
@@ -104,16 +104,10 @@ TEST(Unicode, AsciiIsDecidedWithoutIcuAsIcuWouldDecideIt) {
     }
 }
 
-// Whether ICU's library is mapped into this process.
+// Whether ICU's library is mapped into this process (it is loaded at the first letter beyond
+// ASCII, not linked).
 bool icu_is_loaded() {
-    std::ifstream maps("/proc/self/maps");
-    std::string line;
-    while (std::getline(maps, line)) {
-        if (line.find("libicuuc") != std::string::npos) {
-            return true;
-        }
-    }
-    return false;
+    return catplan::library_is_mapped("libicuuc");
 }
 
 TEST(Unicode, IcuIsLoadedAtTheFirstCodePointBeyondAsciiOnly) {

@@ -1,9 +1,9 @@
+#include "catplan/base/dynamic_library.hpp"
 #include "catplan/lang/syntax.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cstdlib>
-#include <fstream>
 #include <string>
 
 namespace catplan::lang {
@@ -236,14 +236,7 @@ TEST(Lexer, IdentifiersHoldLettersAsUnicodeDefinesThem) {
 // Whether ICU's library is mapped into this process (it is loaded at the first letter beyond
 // ASCII, not linked).
 bool icu_is_loaded() {
-    std::ifstream maps("/proc/self/maps");
-    std::string line;
-    while (std::getline(maps, line)) {
-        if (line.find("libicuuc") != std::string::npos) {
-            return true;
-        }
-    }
-    return false;
+    return catplan::library_is_mapped("libicuuc");
 }
 
 TEST(Lexer, NeedsIcuOnlyForLettersBeyondAscii) {
