@@ -1,4 +1,5 @@
 #include "catplan/base/diagnostic.hpp"
+#include "catplan/base/lazy.hpp"
 #include "catplan/base/parallel.hpp"
 #include "catplan/base/process.hpp"
 #include "catplan/base/result.hpp"
@@ -122,6 +123,50 @@ TEST(UnionFind, SmallestIdRepresentsTheSet) {
     EXPECT_FALSE(uf.union_sets(1, 4));
     EXPECT_EQ(uf.find(4), 1u);
     EXPECT_EQ(uf.find(0), 0u);
+}
+
+// An owner of a lazily computed value that refers back to it, as a rule's shape does.
+struct Owner {
+    int id = 0;
+    Lazy<const Owner*> self;
+    std::atomic<int>* computed = nullptr;
+
+    const Owner* get() const {
+        return self.get([&] {
+            computed->fetch_add(1);
+            return this;
+        });
+    }
+};
+
+TEST(Lazy, EveryThreadSeesTheOneValuePublishedAndACopyComputesItsOwn) {
+    std::atomic<int> computed{0};
+    Owner a{1, {}, &computed};
+    EXPECT_EQ(a.self.peek(), nullptr);
+    std::vector<const Owner*> seen(8, nullptr);
+    std::vector<std::thread> threads;
+    for (std::size_t t = 0; t < seen.size(); ++t) {
+        threads.emplace_back([&, t] { seen[t] = a.get(); });
+    }
+    for (auto& t : threads) {
+        t.join();
+    }
+    for (const Owner* p : seen) {
+        EXPECT_EQ(p, &a);
+    }
+    ASSERT_NE(a.self.peek(), nullptr);
+    EXPECT_EQ(*a.self.peek(), &a);
+    int after_threads = computed.load();
+    EXPECT_GE(after_threads, 1);
+    EXPECT_EQ(a.get(), &a);
+    EXPECT_EQ(computed.load(), after_threads) << "computed once published";
+
+    Owner b = a; // refers to a until it computes its own
+    EXPECT_EQ(b.self.peek(), nullptr);
+    EXPECT_EQ(b.get(), &b);
+    a = b;
+    EXPECT_EQ(a.self.peek(), nullptr) << "assignment forgets the old value";
+    EXPECT_EQ(a.get(), &a);
 }
 
 TEST(Result, CarriesValueOrReason) {

@@ -14,7 +14,7 @@ namespace detail {
 
 Shape::Shape(const Rule& r) : rule(r) {
     const auto& s = r.L.schema();
-    gluing.cascade = r.semantics == Semantics::SPO;
+    colimit::ComplementOptions gluing;
     gluing.open.homs.resize(s.num_homs());
     for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
         ObId ob(o);
@@ -62,7 +62,23 @@ Shape::Shape(const Rule& r) : rule(r) {
         }
         l_incident.push_back(std::move(counts));
     }
+    gluing_by_semantics = {gluing, gluing};
+    gluing_by_semantics[1].cascade = true;
 }
+
+} // namespace detail
+
+const detail::Shape& Rule::shape() const {
+    const auto& shape = shape_.get([&] { return detail::Shape(*this); });
+    for (std::uint32_t o = 0; o < shape.deletes.size(); ++o) {
+        CATPLAN_ASSERT(shape.deletes[o].size() == L.num_parts(ObId(o)) &&
+                           shape.k_of_r[o].size() == R.num_parts(ObId(o)),
+                       "a rule's states changed after it was matched or applied");
+    }
+    return shape;
+}
+
+namespace detail {
 
 bool is_injective(const ACSetMorphism& m, const ACSet& dom) {
     const auto& s = dom.schema();
@@ -84,7 +100,7 @@ std::optional<std::string> condition_problem(const Rule& rule, const ACSet& x,
 std::optional<std::string> validity_problem(const Shape& shape, const ACSet& x,
                                             const ACSetMorphism& m) {
     const Rule& rule = shape.rule;
-    auto violations = colimit::gluing_violations(rule.K, rule.L, x, rule.l, m, shape.gluing);
+    auto violations = colimit::gluing_violations(rule.K, rule.L, x, rule.l, m, shape.gluing());
     if (!violations.empty()) {
         return violations.front().reason;
     }
@@ -292,7 +308,7 @@ std::optional<std::string> condition_problem(const std::vector<ApplicationCondit
 
 std::vector<ACSetMorphism> find_matches(const Rule& rule, const ACSet& x,
                                         const MatchOptions& options) {
-    detail::Shape shape(rule);
+    const detail::Shape& shape = rule.shape();
     const auto& s = x.schema();
     hom::HomSearchOptions opt;
     opt.monic_all = options.monic;
@@ -342,7 +358,7 @@ std::optional<std::string> match_problem(const Rule& rule, const ACSet& x, const
     if (monic && !detail::is_injective(m, rule.L)) {
         return std::string("the match is not monic");
     }
-    return detail::validity_problem(detail::Shape(rule), x, m);
+    return detail::validity_problem(rule.shape(), x, m);
 }
 
 } // namespace catplan::rewrite

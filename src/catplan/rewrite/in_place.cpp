@@ -177,9 +177,9 @@ Result<ACSetMorphism> rewrite_in_place(const Rule& rule, ACSet& x, const ACSetMo
     if (!failures.empty()) {
         return fail("the match is not a morphism: " + hom::describe(failures.front(), rule.L, x));
     }
-    Shape shape(rule);
+    const Shape& shape = rule.shape();
     // The gluing conditions and the parts to delete come from one pass (colimit::deletion).
-    auto deletion = colimit::deletion(rule.K, rule.L, x, rule.l, m, shape.gluing);
+    auto deletion = colimit::deletion(rule.K, rule.L, x, rule.l, m, shape.gluing());
     if (!deletion.violations.empty()) {
         return fail(deletion.violations.front().reason);
     }

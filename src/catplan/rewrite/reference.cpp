@@ -28,7 +28,7 @@ struct GluingSpan {
 GluingSpan gluing_span(const Shape& shape) {
     const Rule& rule = shape.rule;
     const auto& s = rule.K.schema();
-    GluingSpan out{ACSet(rule.K.schema_ptr()), {}, {}, rule.R, shape.gluing};
+    GluingSpan out{ACSet(rule.K.schema_ptr()), {}, {}, rule.R, shape.gluing()};
     for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
         ObId ob(o);
         for (Part k = 0; k < rule.K.num_parts(ob); ++k) {
@@ -135,7 +135,7 @@ Result<Rewrite> rewrite(const Rule& rule, const ACSet& x, const ACSetMorphism& m
     if (auto problem = match_problem(rule, x, m, /*monic=*/false)) {
         return fail(*problem);
     }
-    Shape shape(rule);
+    const Shape& shape = rule.shape();
     auto r_var = detail::application_values(shape, m);
     if (!r_var) {
         return fail(r_var.error());

@@ -2,6 +2,7 @@
 #include "catplan/colimit/colimit.hpp"
 #include "catplan/hom/hom_search.hpp"
 #include "catplan/hom/isomorphism.hpp"
+#include "catplan/rewrite/detail/shape.hpp"
 #include "catplan/rewrite/dpo.hpp"
 
 #include <gtest/gtest.h>
@@ -75,6 +76,13 @@ TEST(DPO, AddsAReverseEdge) {
     ACSet in_place = span;
     ASSERT_TRUE(rewrite_in_place(rule, in_place, m).has_value());
     EXPECT_TRUE(hom::is_isomorphic(span_w_arrow, in_place));
+    // The rule keeps its shape; a copy computes its own, about itself.
+    EXPECT_EQ(&rule.shape().rule, &rule);
+    Rule copy = rule;
+    EXPECT_EQ(&copy.shape().rule, &copy);
+    ACSet again = span;
+    ASSERT_TRUE(rewrite_in_place(copy, again, m).has_value());
+    EXPECT_TRUE(hom::is_isomorphic(span_w_arrow, again));
 }
 
 // reference §4.3: a non-monic match deletes one loop of two.

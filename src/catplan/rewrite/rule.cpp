@@ -184,15 +184,15 @@ bool same_counts(const Rule& rule, const std::vector<std::size_t>& counts, ObId 
 } // namespace
 
 const Rule::Anatomy& Rule::anatomy(ObId ob) const {
-    if (!anatomy_) {
-        anatomy_ = std::make_shared<const Anatomy>(Anatomy{colimit::parts_outside_image(l, L),
-                                                           colimit::parts_outside_image(r, R),
-                                                           part_counts(*this)});
-    } else {
-        CATPLAN_ASSERT(same_counts(*this, anatomy_->counts, ob),
+    if (const Anatomy* known = anatomy_.peek()) {
+        CATPLAN_ASSERT(same_counts(*this, known->counts, ob),
                        "a rule's states changed after its deleted and created parts were read");
+        return *known;
     }
-    return *anatomy_;
+    return anatomy_.get([&] {
+        return Anatomy{colimit::parts_outside_image(l, L), colimit::parts_outside_image(r, R),
+                       part_counts(*this)};
+    });
 }
 
 std::vector<RuleProblem> check_rule(const Rule& rule) {

@@ -26,6 +26,7 @@
 // monic N -> X (PDDL's negative preconditions).
 
 #include "catplan/acset/acset.hpp"
+#include "catplan/base/lazy.hpp"
 #include "catplan/base/result.hpp"
 #include "catplan/base/source.hpp"
 #include "catplan/hom/morphism.hpp"
@@ -110,6 +111,10 @@ struct Cost {
 /// still rejected, since the rule says that part stays.
 enum class Semantics : std::uint8_t { DPO, SPO };
 
+namespace detail {
+struct Shape;
+}
+
 struct Rule {
     std::string name;
     Semantics semantics = Semantics::DPO;
@@ -142,10 +147,15 @@ struct Rule {
         return anatomy(ob).created[ob.index()];
     }
 
+    /// What matching and application need to know about the rule (detail/shape.hpp), computed
+    /// at the first match or application and kept.
+    const detail::Shape& shape() const;
+
 private:
-    // What the rule deletes and creates, computed on first use. A builder fills L, K, R, l and r
-    // first; changing them afterwards is a misuse (asserted on the part counts at the object
-    // asked about: these are read once per ground action, so the check must not cost more).
+    // What the rule deletes and creates, and its shape, computed on first use (base/lazy.hpp: a
+    // copy computes its own). A builder fills L, K, R, l and r first; changing them afterwards is
+    // a misuse (asserted on the part counts at the object asked about: these are read once per
+    // ground action, so the check must not cost more).
     struct Anatomy {
         std::vector<std::vector<Part>> deleted, created;
         std::vector<std::size_t> counts; // per object: parts of L, K, R when computed
@@ -153,7 +163,8 @@ private:
 
     const Anatomy& anatomy(ObId ob) const;
 
-    mutable std::shared_ptr<const Anatomy> anatomy_;
+    Lazy<Anatomy> anatomy_;
+    Lazy<detail::Shape> shape_;
 };
 
 using RulePtr = std::shared_ptr<const Rule>;

@@ -1,12 +1,13 @@
 #pragma once
 // What matching (dpo.cpp), the fast in-place application (in_place.cpp) and the reference
-// application by colimits (reference.cpp) share: facts about a rule computed once per call, the
-// validity of a match, and the values a match gives R's variables. Both applications reject a
+// application by colimits (reference.cpp) share: facts about a rule computed once (Rule::shape),
+// the validity of a match, and the values a match gives R's variables. Both applications reject a
 // match for the same reasons because they ask these same functions.
 
 #include "catplan/colimit/colimit.hpp"
 #include "catplan/rewrite/rule.hpp"
 
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
@@ -17,8 +18,8 @@ namespace catplan::rewrite::detail {
 inline constexpr const char* kGluingKeptParts =
     "rules whose Eff glues two kept parts into one are not supported";
 
-// Facts about a rule that matching and application need, computed once per call (rules are
-// small, so this is cheap next to the search).
+// Facts about a rule that matching and application need, computed at the rule's first match or
+// application and kept with it (Rule::shape).
 struct Shape {
     explicit Shape(const Rule& rule);
 
@@ -33,11 +34,16 @@ struct Shape {
     /// referring to a deleted part are images of L parts, which a well-formed l deletes too or
     /// keeps with a hom that L and K agree on.
     bool dangling_by_counts = true;
-    /// How deleting works for this rule: the homs it redirects (unset in K, set in R) are open,
-    /// so they are no dangling references; SPO rules cascade.
-    colimit::ComplementOptions gluing;
+    /// How deleting works for this rule, under DPO and under SPO: the homs it redirects (unset in
+    /// K, set in R) are open, so they are no dangling references; SPO rules cascade.
+    std::array<colimit::ComplementOptions, 2> gluing_by_semantics;
 
     bool deleted(ObId o, Part p) const { return deletes[o.index()][p] != 0; }
+
+    /// How deleting works under the rule's semantics now (a rule may be switched to SPO).
+    const colimit::ComplementOptions& gluing() const {
+        return gluing_by_semantics[rule.semantics == Semantics::SPO ? 1 : 0];
+    }
 };
 
 /// Whether every object component of m is injective.
