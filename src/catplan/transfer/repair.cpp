@@ -33,15 +33,21 @@ bool embeds(const ACSet& goal, const ACSet& x) {
     return hom::is_homomorphic(goal, x, opt);
 }
 
-// The steps replayed as DPO steps on a copy of y, each match bound by names (through the index
-// of names), and the subgoal checked to embed in the result, by names, or (unless `by_names`)
-// by any monic morphism: each step's match, or why the steps do not reach the subgoal. `named`
-// says which embedding was found.
-Result<std::vector<ACSetMorphism>> replay(const plan::Domain& target, const NamedState& y,
-                                          const std::vector<plan::Step>& steps,
-                                          const ACSet& subgoal, bool by_names, bool& named) {
-    NamedState z = y;
+// What replaying steps on y gives: each step's match and the state reached.
+struct Replayed {
     std::vector<ACSetMorphism> matches;
+    NamedState state;
+    bool named = false; // the subgoal embeds in the state by names
+};
+
+// The steps replayed as DPO steps on a copy of y, each match bound by names (through the index
+// of names), created parts named by `name`, and the subgoal checked to embed in the result, by
+// names, or (unless `by_names`) by any monic morphism; or why the steps do not reach the subgoal.
+Result<Replayed> replay(const plan::Domain& target, const NamedState& y,
+                        const std::vector<plan::Step>& steps, const ACSet& subgoal, bool by_names,
+                        const CreatedName& name) {
+    Replayed out{{}, y};
+    NamedState& z = out.state;
     for (const auto& step : steps) {
         const auto* rule = target.find_rule(step.action);
         if (rule == nullptr) {
@@ -51,18 +57,26 @@ Result<std::vector<ACSetMorphism>> replay(const plan::Domain& target, const Name
         if (!m) {
             return fail(m.error());
         }
-        auto applied =
-            z.apply(*rule, *m, [&](ObId ob, Part) { return z.fresh_name(ob, "repair"); });
+        auto applied = z.apply(*rule, *m, [&](ObId ob, Part) { return name(z, ob); });
         if (!applied) {
             return fail(applied.error());
         }
-        matches.push_back(std::move(*m));
+        out.matches.push_back(std::move(*m));
     }
-    named = embeds_by_names(z, subgoal);
-    if (!named && (by_names || !embeds(subgoal, z.state()))) {
+    out.named = embeds_by_names(z, subgoal);
+    if (!out.named && (by_names || !embeds(subgoal, z.state()))) {
         return fail("the subgoal does not embed in the state the steps reach");
     }
-    return matches;
+    return out;
+}
+
+// The repair found: its steps, and their replay.
+void take(Repair& out, std::vector<plan::Step> steps, Replayed replayed) {
+    out.found = true;
+    out.steps = std::move(steps);
+    out.matches = std::move(replayed.matches);
+    out.reached.emplace(std::move(replayed.state));
+    out.by_names = replayed.named;
 }
 
 // Whether every argument of the steps names a part of `initial`: a step of a focused plan that
@@ -89,7 +103,9 @@ bool binds_initial_parts(const plan::Domain& target, const ACSet& initial,
 Repairer::Repairer(plan::DomainPtr target, RepairOptions options)
     : target_(std::move(target)), options_(std::move(options)) {}
 
-Repair Repairer::repair(const NamedState& y, const ACSet& subgoal, std::size_t step) {
+Repair Repairer::repair(const NamedState& y, const ACSet& subgoal, std::size_t step,
+                        const CreatedName& name) {
+    name_ = name;
     Repair out;
     auto focus = Focus::of(y, subgoal);
     if (embeds_by_names(y, subgoal, &focus)) {
@@ -137,15 +153,11 @@ bool Repairer::use_memo(const NamedState& y, const ACSet& subgoal, const RepairS
         return false;
     }
     auto steps = RepairMemo::renamed(*e, shape);
-    bool named = false;
-    auto matches = replay(*target_, y, steps, subgoal, true, named);
-    if (!matches) {
+    auto replayed = replay(*target_, y, steps, subgoal, true, name_);
+    if (!replayed) {
         return false; // something outside the focus differs
     }
-    out.found = true;
-    out.steps = std::move(steps);
-    out.matches = std::move(*matches);
-    out.by_names = true;
+    take(out, std::move(steps), std::move(*replayed));
     out.reused_from = e->origin;
     return true;
 }
@@ -196,16 +208,12 @@ bool Repairer::focus_repair(const NamedState& y, const ACSet& subgoal, const Foc
         if (shape) {
             memo_.remember(*shape, r.plan->steps, step);
         }
-        bool named = false;
-        auto matches = replay(*target_, y, r.plan->steps, subgoal, true, named);
-        if (!matches) {
+        auto replayed = replay(*target_, y, r.plan->steps, subgoal, true, name_);
+        if (!replayed) {
             continue;
         }
-        out.found = true;
-        out.steps = std::move(r.plan->steps);
-        out.matches = std::move(*matches);
+        take(out, std::move(r.plan->steps), std::move(*replayed));
         out.focus_parts = fp.parts;
-        out.by_names = true;
         return true;
     }
     return false;
@@ -255,11 +263,9 @@ void Repairer::whole_repair(const NamedState& y, const ACSet& subgoal, Repair& o
                                     plan::to_string(r.status), out.stats.expanded);
         return;
     }
-    auto matches = replay(*target_, y, r.plan->steps, subgoal, false, out.by_names);
-    CATPLAN_ASSERT(matches, "a plan the planner validated replays on its initial state");
-    out.found = true;
-    out.steps = std::move(r.plan->steps);
-    out.matches = std::move(*matches);
+    auto replayed = replay(*target_, y, r.plan->steps, subgoal, false, name_);
+    CATPLAN_ASSERT(replayed, "a plan the planner validated replays on its initial state");
+    take(out, std::move(r.plan->steps), std::move(*replayed));
 }
 
 } // namespace catplan::transfer

@@ -14,12 +14,13 @@
 // 4), its goal reached by names, unless a focus of the same shape was searched before in this
 // transfer: its plan, renamed, is used then (repair_memo.hpp); a plan found there is replayed on
 // the whole Y_{i-1} as DPO steps and the whole subgoal is checked to hold by names in the result
-// before it is used (one that fails, for a negative condition or a dangling part the focus does not
-// see, is set aside and the next focus tried). Only when no focus gives a plan, and the subgoal
-// does not embed in Y_{i-1} by another monic morphism either, is the whole state searched: the
-// target's ground task is compiled once per transfer and searched from each state with its subgoal
-// (plan/ground/reuse.hpp), else the repair's own problem. Each search is the planner's (greedy
-// best-first with h_FF by default, within node and time limits).
+// before it is used, and the result is the transfer's next target state (one that fails, for a
+// negative condition or a dangling part the focus does not see, is set aside and the next focus
+// tried). Only when no focus gives a plan, and the subgoal does not embed in Y_{i-1} by another
+// monic morphism either, is the whole state searched: the target's ground task is compiled once per
+// transfer and searched from each state with its subgoal (plan/ground/reuse.hpp), else the repair's
+// own problem. Each search is the planner's (greedy best-first with h_FF by default, within node
+// and time limits).
 
 #include "catplan/acset/acset.hpp"
 #include "catplan/hom/morphism.hpp"
@@ -32,6 +33,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -62,6 +64,10 @@ struct Repair {
     std::vector<plan::Step> steps; ///< arguments name parts of y by name
     /// The match of each step in the state the steps before it lead to, from y.
     std::vector<hom::ACSetMorphism> matches;
+    /// The state the steps reach from y, its created parts named by the repair's naming function
+    /// (empty when no step was needed): the transfer takes it as its next target state rather
+    /// than applying the steps again.
+    std::optional<NamedState> reached;
     /// The statistics of the searches, summed (the focuses tried and the whole state).
     plan::SearchStats stats;
     /// When found on a focus: how many parts of y it kept (focus.hpp); 0 on the whole state.
@@ -75,14 +81,20 @@ struct Repair {
     std::string why; ///< when not found: "the subgoal is unreachable", "time limit reached"
 };
 
+/// The name of a part of an object that a repair's step creates, given the state it is created
+/// in (which must not have that name yet).
+using CreatedName = std::function<std::string(NamedState&, ObId)>;
+
 /// Repairs steps of one transfer into one target domain.
 class Repairer {
 public:
     Repairer(plan::DomainPtr target, RepairOptions options);
 
     /// A plan in the target domain from y to a state into which subgoal embeds monically, for
-    /// source step `step` (a later repair of the same shape names it as the one it reuses).
-    Repair repair(const NamedState& y, const acset::ACSet& subgoal, std::size_t step);
+    /// source step `step` (a later repair of the same shape names it as the one it reuses), and
+    /// the state it reaches, whose created parts `name` names.
+    Repair repair(const NamedState& y, const acset::ACSet& subgoal, std::size_t step,
+                  const CreatedName& name);
 
 private:
     bool focus_repair(const NamedState& y, const acset::ACSet& subgoal, const Focus& focus,
@@ -99,6 +111,7 @@ private:
     std::optional<plan::ground::ReusableTask> task_;
     std::string why_no_task_; ///< why it could not be compiled (then each repair compiles its own)
     RepairMemo memo_;         ///< the plans of the focuses searched, by shape
+    CreatedName name_;        ///< the naming of the repair being made
 };
 
 } // namespace catplan::transfer

@@ -333,8 +333,11 @@ private:
 
     // The name of a part of ob that target step i creates and no source part names: after its
     // object and the step (clear@2), a name no person writes (terms.hpp).
-    std::string created_name(ObId ob, std::size_t i) {
-        return y_->fresh_name(ob, fmt::format("{}@{}", lowercase(f_.target()->ob(ob).name), i + 1));
+    std::string created_name(ObId ob, std::size_t i) { return created_name(*y_, ob, i); }
+
+    // The same name in a target state z (one a repair reaches from Y_{i-1}).
+    std::string created_name(NamedState& z, ObId ob, std::size_t i) {
+        return z.fresh_name(ob, fmt::format("{}@{}", lowercase(f_.target()->ob(ob).name), i + 1));
     }
 
     // Applies the source step, naming a created part after its generator in the rule, or after
@@ -422,7 +425,8 @@ private:
         if (!repairer_) {
             repairer_.emplace(own.domain, options_.repair);
         }
-        auto repair = repairer_->repair(*y_, subgoal, i);
+        auto repair = repairer_->repair(
+            *y_, subgoal, i, [&](NamedState& z, ObId ob) { return created_name(z, ob, i); });
         if (!repair.found) {
             return fail_at(i, fmt::format("{}; repair: {}",
                                           c == nullptr ? "no target action corresponds"
@@ -430,11 +434,8 @@ private:
                                                          "match in the target",
                                           repair.why));
         }
-        for (std::size_t k = 0; k < repair.steps.size(); ++k) {
-            const auto* rule = own.domain->find_rule(repair.steps[k].action);
-            auto applied = y_->apply(*rule, repair.matches[k],
-                                     [&](ObId ob, Part) { return created_name(ob, i); });
-            CATPLAN_ASSERT(applied, "a repair's step applies");
+        if (repair.reached) {
+            *y_ = std::move(*repair.reached); // the steps replayed from Y_{i-1}, checked there
         }
         if (comparing()) {
             // The repair reaches a state that holds Δ_F(X_i); whether it is Δ_F(X_i) is checked.
