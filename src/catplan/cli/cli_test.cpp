@@ -3,10 +3,13 @@
 #include "catplan/base/assert.hpp"
 #include "catplan/base/out_of_memory.hpp"
 #include "catplan/cli/commands.hpp"
+#include "catplan/cli/common.hpp"
 #include "catplan/cli/options.hpp"
 
 #include <gtest/gtest.h>
 
+#include <CLI/CLI.hpp>
+#include <algorithm>
 #include <cstdio>
 #include <iostream>
 #include <new>
@@ -98,6 +101,32 @@ TEST(Subcommands, UnknownOrMissingSubcommandIsAUsageErrorWithASuggestion) {
     EXPECT_EQ(r.code, kBadInput);
     EXPECT_EQ(r.err.rfind("catplan: error: ", 0), 0u) << r.err;
     EXPECT_NE(r.err.find("catplan: run 'catplan show --help' for the usage"), std::string::npos);
+}
+
+// run() builds only the group of the command named, so each group must add exactly the
+// commands it is listed with, and no command may be in two groups.
+TEST(Subcommands, EachGroupAddsExactlyTheCommandsItNames) {
+    std::vector<std::string> all;
+    for (const auto& g : command_groups()) {
+        CLI::App app;
+        CommandTable table;
+        g.add(app, table);
+        std::vector<std::string> added, named(g.names.begin(), g.names.end());
+        for (const auto* sub : app.get_subcommands([](const CLI::App*) { return true; })) {
+            added.push_back(sub->get_name());
+        }
+        EXPECT_EQ(added, named);
+        all.insert(all.end(), named.begin(), named.end());
+    }
+    std::sort(all.begin(), all.end());
+    EXPECT_EQ(std::adjacent_find(all.begin(), all.end()), all.end());
+    EXPECT_EQ(all.size(), 14u);
+    // A command runs with only its group built, and help still lists every command.
+    auto r = run_args({"--help"});
+    EXPECT_EQ(r.code, kOk);
+    for (const auto& name : all) {
+        EXPECT_NE(r.out.find("  " + name + " "), std::string::npos) << name;
+    }
 }
 
 TEST(PddlImport, WritesAFileThatLoadsWithPddlNamesQuoted) {

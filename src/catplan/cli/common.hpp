@@ -196,6 +196,15 @@ private:
     std::vector<std::pair<CLI::App*, Run>> entries_;
 };
 
+/// Top-level commands that one function adds to the command line, with their options.
+struct CommandGroup {
+    std::vector<std::string_view> names;
+    void (*add)(CLI::App& app, CommandTable& table);
+};
+
+/// Every group of commands, in the order `catplan --help` lists them (commands.cpp).
+const std::vector<CommandGroup>& command_groups();
+
 /// Adds `check`, `show` and `homs` (inspect_commands.cpp).
 void add_inspect_commands(CLI::App& app, CommandTable& table);
 /// Adds `migrate` and `migrate-domain` (migrate_commands.cpp).
