@@ -131,7 +131,9 @@ Repair Repairer::repair(const NamedState& y, const ACSet& subgoal, std::size_t s
 plan::SearchResult Repairer::search_by_names(const plan::ProblemPtr& p,
                                              const plan::SearchOptions& options) const {
     if (options.ground) {
-        auto task = plan::ground::ReusableTask::compile(p, options);
+        plan::ground::CompileOptions small; // a focus: a few blocks, a few expansions
+        small.mutexes = false;
+        auto task = plan::ground::ReusableTask::compile(p, options, small);
         if (task) {
             auto r = task->search(p->initial, p->goal, options);
             if (r) {

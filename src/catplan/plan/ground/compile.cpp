@@ -225,7 +225,9 @@ Result<Task> compile(const ProblemPtr& problem, Budget& budget, const CompileOpt
     }
     task.initial = u.initial_values;
     task.initial.resize(task.vars.size(), 0);
-    task.mutex_groups = find_mutex_groups(task, budget);
+    if (options.mutexes) {
+        task.mutex_groups = find_mutex_groups(task, budget);
+    }
     return task;
 }
 

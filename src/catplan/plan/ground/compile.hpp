@@ -32,6 +32,9 @@ struct CompileOptions {
     std::size_t max_atoms = 2'000'000;
     std::size_t max_values = 4096; // per variable
     std::size_t max_goal_terms = 4096;
+    /// Find the mutex groups that pack a state into fewer words (mutexes.hpp); a task whose
+    /// search expands a handful of states (a repair's focus) does better without the analysis.
+    bool mutexes = true;
 };
 
 /// The ground task of a problem, or why the fast path does not apply; polls budget (and may

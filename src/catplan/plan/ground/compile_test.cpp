@@ -234,6 +234,25 @@ TEST(MutexGroups, HoldOnRandomWalksAndPackedStatesMatch) {
     expect_groups_hold_on_walks(paper, 7);
 }
 
+// A repair's focus is compiled without the analysis: the same actions, each variable packed alone.
+TEST(MutexGroups, ATaskCompiledWithoutThemHasTheSameActionsAndPacksEachVariableAlone) {
+    std::mt19937_64 rng(4);
+    auto init = random_towers(6, rng);
+    auto goal = random_towers(6, rng);
+    auto p = blocks_problem(blocks_domain(true), block_names(6), init, goal);
+    Budget budget({}, Clock::now());
+    CompileOptions options;
+    options.mutexes = false;
+    auto t = compile(p, budget, options);
+    ASSERT_TRUE(t.has_value()) << t.error();
+    EXPECT_TRUE(t->mutex_groups.empty());
+    Task with = compiled(p);
+    EXPECT_FALSE(with.mutex_groups.empty());
+    EXPECT_EQ(t->actions.size(), with.actions.size());
+    EXPECT_EQ(t->vars.size(), with.vars.size());
+    expect_groups_hold_on_walks(*t, 4);
+}
+
 TEST(MutexGroups, ThirtyBlocksPackIntoFourWords) {
     std::mt19937_64 rng(30);
     auto init = random_towers(30, rng);
