@@ -105,7 +105,7 @@ Repairer::Repairer(plan::DomainPtr target, RepairOptions options)
 
 Repair Repairer::repair(const NamedState& y, const ACSet& subgoal, std::size_t step,
                         const CreatedName& name) {
-    name_ = name;
+    Request q{y, subgoal, step, name};
     Repair out;
     auto focus = Focus::of(y, subgoal);
     if (embeds_by_names(y, subgoal, &focus)) {
@@ -113,14 +113,14 @@ Repair Repairer::repair(const NamedState& y, const ACSet& subgoal, std::size_t s
         out.by_names = true;
         return out;
     }
-    if (focus && focus_repair(y, subgoal, *focus, step, out)) {
+    if (focus && focus_repair(q, *focus, out)) {
         return out;
     }
     if (embeds(subgoal, y.state())) {
         out.found = true; // by another morphism than the names'
         return out;
     }
-    whole_repair(y, subgoal, out);
+    whole_repair(q, out);
     return out;
 }
 
@@ -147,15 +147,15 @@ plan::SearchResult Repairer::search_by_names(const plan::ProblemPtr& p,
 
 // The plan remembered for a focus of this shape, renamed and replayed on y; `searched_before`
 // says whether the shape was searched at all (a failed search need not be run again).
-bool Repairer::use_memo(const NamedState& y, const ACSet& subgoal, const RepairShape& shape,
-                        Repair& out, bool& searched_before) const {
+bool Repairer::use_memo(const Request& q, const RepairShape& shape, Repair& out,
+                        bool& searched_before) const {
     const auto* e = memo_.find(shape);
     searched_before = e != nullptr;
     if (e == nullptr || !e->solved) {
         return false;
     }
     auto steps = RepairMemo::renamed(*e, shape);
-    auto replayed = replay(*target_, y, steps, subgoal, true, name_);
+    auto replayed = replay(*target_, q.y, steps, q.subgoal, true, q.name);
     if (!replayed) {
         return false; // something outside the focus differs
     }
@@ -164,8 +164,7 @@ bool Repairer::use_memo(const NamedState& y, const ACSet& subgoal, const RepairS
     return true;
 }
 
-bool Repairer::focus_repair(const NamedState& y, const ACSet& subgoal, const Focus& focus,
-                            std::size_t step, Repair& out) {
+bool Repairer::focus_repair(const Request& q, const Focus& focus, Repair& out) {
     if (focus.seeds() == 0) {
         return false;
     }
@@ -190,7 +189,7 @@ bool Repairer::focus_repair(const NamedState& y, const ACSet& subgoal, const Foc
         p->goal = std::make_shared<const ACSet>(std::move(fp.goal));
         auto shape = repair_shape(*p->initial, *p->goal);
         bool searched_before = false;
-        if (shape && use_memo(y, subgoal, *shape, out, searched_before)) {
+        if (shape && use_memo(q, *shape, out, searched_before)) {
             out.focus_parts = fp.parts;
             return true;
         }
@@ -203,14 +202,14 @@ bool Repairer::focus_repair(const NamedState& y, const ACSet& subgoal, const Foc
             !binds_initial_parts(*target_, *p->initial, r.plan->steps)) {
             if (shape && r.status != plan::SearchStatus::TimeLimit &&
                 r.status != plan::SearchStatus::MemoryLimit) {
-                memo_.remember_failure(*shape, step);
+                memo_.remember_failure(*shape, q.step);
             }
             continue;
         }
         if (shape) {
-            memo_.remember(*shape, r.plan->steps, step);
+            memo_.remember(*shape, r.plan->steps, q.step);
         }
-        auto replayed = replay(*target_, y, r.plan->steps, subgoal, true, name_);
+        auto replayed = replay(*target_, q.y, r.plan->steps, q.subgoal, true, q.name);
         if (!replayed) {
             continue;
         }
@@ -223,9 +222,9 @@ bool Repairer::focus_repair(const NamedState& y, const ACSet& subgoal, const Foc
 
 // The whole state: the target's ground task compiled once per transfer and searched from each
 // state (plan/ground/reuse.hpp), else a search of the repair's own problem.
-void Repairer::whole_repair(const NamedState& y, const ACSet& subgoal, Repair& out) {
-    auto initial = std::make_shared<const ACSet>(y.state());
-    auto goal = std::make_shared<const ACSet>(subgoal);
+void Repairer::whole_repair(const Request& q, Repair& out) {
+    auto initial = std::make_shared<const ACSet>(q.y.state());
+    auto goal = std::make_shared<const ACSet>(q.subgoal);
     plan::SearchResult r;
     bool searched = false;
     if (options_.search.ground && !task_ && why_no_task_.empty()) {
@@ -265,7 +264,7 @@ void Repairer::whole_repair(const NamedState& y, const ACSet& subgoal, Repair& o
                                     plan::to_string(r.status), out.stats.expanded);
         return;
     }
-    auto replayed = replay(*target_, y, r.plan->steps, subgoal, false, name_);
+    auto replayed = replay(*target_, q.y, r.plan->steps, q.subgoal, false, q.name);
     CATPLAN_ASSERT(replayed, "a plan the planner validated replays on its initial state");
     take(out, std::move(r.plan->steps), std::move(*replayed));
 }

@@ -97,11 +97,18 @@ public:
                   const CreatedName& name);
 
 private:
-    bool focus_repair(const NamedState& y, const acset::ACSet& subgoal, const Focus& focus,
-                      std::size_t step, Repair& out);
-    bool use_memo(const NamedState& y, const acset::ACSet& subgoal, const RepairShape& shape,
-                  Repair& out, bool& searched_before) const;
-    void whole_repair(const NamedState& y, const acset::ACSet& subgoal, Repair& out);
+    // One repair asked for: from y to a state that holds subgoal, for source step `step`.
+    struct Request {
+        const NamedState& y;
+        const acset::ACSet& subgoal;
+        std::size_t step;
+        const CreatedName& name;
+    };
+
+    bool focus_repair(const Request& q, const Focus& focus, Repair& out);
+    bool use_memo(const Request& q, const RepairShape& shape, Repair& out,
+                  bool& searched_before) const;
+    void whole_repair(const Request& q, Repair& out);
     plan::SearchResult search_by_names(const plan::ProblemPtr& p,
                                        const plan::SearchOptions& options) const;
 
@@ -111,7 +118,6 @@ private:
     std::optional<plan::ground::ReusableTask> task_;
     std::string why_no_task_; ///< why it could not be compiled (then each repair compiles its own)
     RepairMemo memo_;         ///< the plans of the focuses searched, by shape
-    CreatedName name_;        ///< the naming of the repair being made
 };
 
 } // namespace catplan::transfer
