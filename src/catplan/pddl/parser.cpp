@@ -151,11 +151,20 @@ void read_action(Parser& p, const SExpr& e, Domain& d) {
     a.name = e.items[1].atom;
     a.range = e.items[1].range;
     bool has_effect = false;
+    std::vector<std::string_view> fields; // given so far: a second one would replace the first
     for (std::size_t i = 2; i + 1 < e.items.size() + 1; i += 2) {
         const SExpr& key = e.items[i];
         if (i + 1 >= e.items.size()) {
             p.error(key.range, "expected a value after this keyword");
             return;
+        }
+        if (key.is_atom(":parameters") || key.is_atom(":precondition") || key.is_atom(":effect")) {
+            if (std::find(fields.begin(), fields.end(), key.atom) != fields.end()) {
+                p.error(key.range,
+                        fmt::format("'{}' is given twice in the action '{}'", key.atom, a.name));
+                return;
+            }
+            fields.push_back(key.atom);
         }
         const SExpr& value = e.items[i + 1];
         Scope scope{d, &a.params};

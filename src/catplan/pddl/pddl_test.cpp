@@ -285,6 +285,20 @@ TEST(PddlErrors, DeepNestingIsALocatedErrorNotACrash) {
     EXPECT_TRUE(fine->domain) << fine->errors().substr(0, 300);
 }
 
+// Found by fuzzing: a second ':parameters' replaced the first, so the precondition named
+// variables the action no longer had.
+TEST(PddlErrors, AnActionFieldGivenTwiceIsAnError) {
+    auto l = load_text(R"((define (domain d) (:predicates (p ?x))
+  (:action a :parameters (?x) :precondition (p ?x) :effect (not (p ?x)) :parameters (?y)
+    :effect (p ?y))))",
+                       "");
+    EXPECT_FALSE(l->domain);
+    auto text = l->errors();
+    EXPECT_NE(text.find("domain.pddl:2:73: error: ':parameters' is given twice in the action 'a'"),
+              std::string::npos)
+        << text;
+}
+
 TEST(PddlErrors, DuplicateParametersObjectsAndConstantsAreLocated) {
     auto l = load_text(R"((define (domain d) (:types t)
   (:constants k k - t)
