@@ -11,6 +11,7 @@
 #include "catplan/plan/domain.hpp"
 
 #include <algorithm>
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <random>
@@ -242,6 +243,14 @@ inline std::vector<std::string> block_names(int n) {
         names.push_back("b" + std::to_string(i + 1));
     }
     return names;
+}
+
+/// A seeded blocks world with a gripper: n blocks b1..bn from random towers to random towers.
+inline ProblemPtr random_blocks_problem(int n, std::uint64_t seed) {
+    std::mt19937_64 rng(seed);
+    auto init = random_towers(n, rng);
+    auto goal = random_towers(n, rng);
+    return blocks_problem(blocks_domain(true), block_names(n), init, goal);
 }
 
 // ---- The paper's ColorBlocksworld (examples/colorblocksworld/colorblocksworld.cp)

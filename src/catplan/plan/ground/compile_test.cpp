@@ -134,10 +134,7 @@ TEST(Compile, ThePapersCaseStudyHasOneMarkerSlot) {
 }
 
 TEST(GroundHeuristics, LmCutIsAtLeastHMaxOnRandomWalks) {
-    std::mt19937_64 rng(5);
-    auto init = random_towers(6, rng);
-    auto goal = random_towers(6, rng);
-    auto p = blocks_problem(blocks_domain(true), block_names(6), init, goal);
+    auto p = random_blocks_problem(6, 5);
     Budget budget({}, Clock::now());
     Task t = compiled(p);
     RelaxedTask r(t);
@@ -223,10 +220,7 @@ void expect_groups_hold_on_walks(const Task& t, std::uint64_t seed) {
 TEST(MutexGroups, HoldOnRandomWalksAndPackedStatesMatch) {
     for (std::uint64_t seed : {1u, 2u, 3u}) {
         SCOPED_TRACE(seed);
-        std::mt19937_64 rng(seed);
-        auto init = random_towers(6, rng);
-        auto goal = random_towers(6, rng);
-        Task t = compiled(blocks_problem(blocks_domain(true), block_names(6), init, goal));
+        Task t = compiled(random_blocks_problem(6, seed));
         EXPECT_FALSE(t.mutex_groups.empty());
         expect_groups_hold_on_walks(t, seed);
     }
@@ -236,10 +230,7 @@ TEST(MutexGroups, HoldOnRandomWalksAndPackedStatesMatch) {
 
 // A repair's focus is compiled without the analysis: the same actions, each variable packed alone.
 TEST(MutexGroups, ATaskCompiledWithoutThemHasTheSameActionsAndPacksEachVariableAlone) {
-    std::mt19937_64 rng(4);
-    auto init = random_towers(6, rng);
-    auto goal = random_towers(6, rng);
-    auto p = blocks_problem(blocks_domain(true), block_names(6), init, goal);
+    auto p = random_blocks_problem(6, 4);
     Budget budget({}, Clock::now());
     CompileOptions options;
     options.mutexes = false;
@@ -254,10 +245,7 @@ TEST(MutexGroups, ATaskCompiledWithoutThemHasTheSameActionsAndPacksEachVariableA
 }
 
 TEST(MutexGroups, ThirtyBlocksPackIntoFourWords) {
-    std::mt19937_64 rng(30);
-    auto init = random_towers(30, rng);
-    auto goal = random_towers(30, rng);
-    Task t = compiled(blocks_problem(blocks_domain(true), block_names(30), init, goal));
+    Task t = compiled(random_blocks_problem(30, 30));
     // 961 atoms: one bit each would take 16 words; 30 fields of 5 bits (31 atoms and none)
     // for the blocks' positions or tops, the rest 1 or 5 bits.
     StatePacker packer(t);
@@ -316,10 +304,7 @@ int reference(const RelaxedTask& r, const std::vector<std::uint32_t>& state, boo
 TEST(GroundHeuristics, HAddAndHMaxStopEarlyWithTheFixpointsValues) {
     std::vector<ProblemPtr> problems = {paper_case_study()};
     for (std::uint64_t seed : {11u, 12u}) {
-        std::mt19937_64 rng(seed);
-        auto init = random_towers(7, rng);
-        auto goal = random_towers(7, rng);
-        problems.push_back(blocks_problem(blocks_domain(true), block_names(7), init, goal));
+        problems.push_back(random_blocks_problem(7, seed));
     }
     for (const auto& p : problems) {
         Budget budget({}, Clock::now());
