@@ -3,6 +3,7 @@
 #include "catplan/base/assert.hpp"
 
 #include <atomic>
+#include <bit>
 #include <memory>
 #include <mutex>
 #include <unordered_map>
@@ -10,17 +11,29 @@
 namespace catplan {
 namespace {
 
-// Texts live in chunks of kChunk strings that never move, so str() reads without locking: a
-// Symbol's text was written, under the mutex, before the Symbol was handed out, and its chunk
-// pointer is published with release and read with acquire. intern() locks.
-constexpr std::uint32_t kChunkBits = 12;
-constexpr std::uint32_t kChunk = 1u << kChunkBits;
-constexpr std::uint32_t kMaxChunks = 1u << 20;
+// Texts live in chunks that never move, so str() reads without locking: a Symbol's text was
+// written, under the mutex, before the Symbol was handed out, and its chunk pointer is published
+// with release and read with acquire. intern() locks. Chunk k holds kFirst << k texts, so that a
+// short command touches only the few pages its symbols need (a first chunk of 4,096 strings,
+// 128 KB constructed at the first intern, was a tenth of the page faults of a small transfer)
+// and 32 chunks hold every 32-bit id.
+constexpr std::uint32_t kFirstBits = 6;
+constexpr std::uint64_t kFirst = std::uint64_t{1} << kFirstBits;
+constexpr std::uint32_t kMaxChunks = 32;
 
-// The chunk pointers (8 MB) are zero-initialized static storage, so that only the pages of the
-// chunks in use are ever touched: zeroing them when the table is made cost every process start.
-// Plain pointers read and written through std::atomic_ref: an array of a million std::atomic is
-// more than clang will evaluate as a constant initializer.
+struct Slot {
+    std::uint32_t chunk;
+    std::uint64_t offset;
+};
+
+// Chunk k starts at id kFirst * (2^k - 1).
+Slot slot_of(std::uint32_t id) {
+    std::uint64_t q = (std::uint64_t{id} >> kFirstBits) + 1;
+    auto k = static_cast<std::uint32_t>(std::bit_width(q) - 1);
+    return {k, id - kFirst * ((std::uint64_t{1} << k) - 1)};
+}
+
+// Plain pointers, zero-initialized static storage, read and written through std::atomic_ref.
 std::string* chunk_table[kMaxChunks];
 
 std::atomic_ref<std::string*> chunk_pointer(std::uint32_t c) {
@@ -36,15 +49,16 @@ struct SymbolTable {
 
     std::uint32_t add(std::string_view text) {
         std::uint32_t id = size;
-        std::uint32_t c = id >> kChunkBits;
-        CATPLAN_ASSERT(c < kMaxChunks, "the symbol table is full");
-        std::string* chunk = chunk_pointer(c).load(std::memory_order_relaxed);
+        CATPLAN_ASSERT(id != UINT32_MAX, "the symbol table is full");
+        Slot at = slot_of(id);
+        std::string* chunk = chunk_pointer(at.chunk).load(std::memory_order_relaxed);
         if (chunk == nullptr) {
-            chunk = new std::string[kChunk]; // owned by the table for the life of the process
-            chunk_pointer(c).store(chunk, std::memory_order_release);
+            // Owned by the table for the life of the process.
+            chunk = new std::string[kFirst << at.chunk];
+            chunk_pointer(at.chunk).store(chunk, std::memory_order_release);
         }
-        chunk[id & (kChunk - 1)] = std::string(text);
-        ids.emplace(chunk[id & (kChunk - 1)], id);
+        chunk[at.offset] = std::string(text);
+        ids.emplace(chunk[at.offset], id);
         ++size;
         return id;
     }
@@ -70,8 +84,9 @@ std::string_view Symbol::str() const {
     if (id_ == 0) {
         return {};
     }
-    const std::string* chunk = chunk_pointer(id_ >> kChunkBits).load(std::memory_order_acquire);
-    return chunk[id_ & (kChunk - 1)];
+    Slot at = slot_of(id_);
+    const std::string* chunk = chunk_pointer(at.chunk).load(std::memory_order_acquire);
+    return chunk[at.offset];
 }
 
 } // namespace catplan
