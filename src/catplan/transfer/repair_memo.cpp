@@ -1,10 +1,12 @@
 #include "catplan/transfer/repair_memo.hpp"
 
 #include "catplan/base/hash.hpp"
+#include "catplan/base/symbol.hpp"
 
 #include <algorithm>
 #include <functional>
 #include <numeric>
+#include <span>
 
 namespace catplan::transfer {
 namespace {
@@ -12,18 +14,24 @@ namespace {
 using acset::ACSet;
 using acset::Value;
 
-// One thing a problem says about some names: a part of a pointed object, a hom value, an
-// attribute value, a fact. `tag` says what, without the names; `args` are the names (their
-// provisional numbers), in the order the tag places them.
-struct Item {
-    std::string tag;
-    std::vector<std::uint32_t> args;
-};
+// The words of an item's code: what it is, then per hom of a fact whether it is set, per
+// attribute whether its value is a name (its number is then an argument) or which value.
+enum Word : std::uint32_t { kPart, kHom, kAttr, kFact, kUnsetHom, kSetHom, kNameValue, kValue };
 
-// Gathers the items of a problem, giving each name a provisional number as it comes.
+// The things a problem says about some names: a part of a pointed object, a hom value, an
+// attribute value, a fact. An item's code says what, without the names (kinds and indices as
+// numbers, other values as the symbols of their texts); its arguments are the names (their
+// provisional numbers), in the order the code places them. Every item's words are kept in two
+// flat arrays, as ranges.
 class Items {
 public:
+    struct Item {
+        std::uint32_t code = 0, code_end = 0; ///< its range of `codes`
+        std::uint32_t args = 0, args_end = 0; ///< its range of `arguments`
+    };
+
     std::vector<Item> items;
+    std::vector<std::uint32_t> codes, arguments;
     std::vector<std::string_view> names;
     std::unordered_map<std::string_view, std::uint32_t> number;
 
@@ -45,7 +53,7 @@ public:
         return true;
     }
 
-    bool add(const ACSet& x, char side) {
+    bool add(const ACSet& x, std::uint32_t side) {
         const auto& s = x.schema();
         for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
             ObId ob(o);
@@ -58,42 +66,60 @@ public:
         return true;
     }
 
+    std::span<const std::uint32_t> code(const Item& i) const {
+        return std::span(codes).subspan(i.code, i.code_end - i.code);
+    }
+
+    std::span<const std::uint32_t> args(const Item& i) const {
+        return std::span(arguments).subspan(i.args, i.args_end - i.args);
+    }
+
 private:
     static bool pointed(const schema::Schema& s, ObId ob) { return !s.homs_into(ob).empty(); }
-
-    // "Pi3": what an item is (a part, hom, attribute or fact), on which side, of which object.
-    static std::string tag(char what, char side, std::uint32_t index) {
-        std::string t{what, side};
-        t += std::to_string(index);
-        return t;
-    }
 
     std::optional<std::uint32_t> name_of(const ACSet& x, ObId ob, Part p) const {
         auto it = number.find(x.part_name(ob, p));
         return it == number.end() ? std::nullopt : std::optional<std::uint32_t>(it->second);
     }
 
+    // Starts an item whose code begins with these words.
+    void start(std::initializer_list<std::uint32_t> words) {
+        auto c = static_cast<std::uint32_t>(codes.size());
+        auto a = static_cast<std::uint32_t>(arguments.size());
+        codes.insert(codes.end(), words);
+        items.push_back({c, c, a, a});
+    }
+
+    // Ends the item started last.
+    void finish() {
+        items.back().code_end = static_cast<std::uint32_t>(codes.size());
+        items.back().args_end = static_cast<std::uint32_t>(arguments.size());
+    }
+
     // A value: a name's number (a string that is a name, as PDDL's object names are), else the
-    // value itself.
-    void value(Item& item, const Value& v) const {
+    // value itself, by the symbol of its text.
+    void value(const Value& v) {
         if (v.tag() == Value::Tag::String) {
             auto it = number.find(v.as_string());
             if (it != number.end()) {
-                item.tag += "=@";
-                item.args.push_back(it->second);
+                codes.push_back(kNameValue);
+                arguments.push_back(it->second);
                 return;
             }
         }
-        item.tag += "=" + v.to_string();
+        codes.push_back(kValue);
+        codes.push_back(Symbol::intern(v.to_string()).id());
     }
 
-    bool add_part(const ACSet& x, char side, ObId ob, Part p) {
+    bool add_part(const ACSet& x, std::uint32_t side, ObId ob, Part p) {
         const auto& s = x.schema();
         auto self = name_of(x, ob, p);
         if (!self) {
             return false;
         }
-        items.push_back({tag('P', side, ob.index()), {*self}});
+        start({kPart, side, ob.index()});
+        arguments.push_back(*self);
+        finish();
         for (HomId f : s.homs_from(ob)) {
             Part t = x.subpart(f, p);
             if (t == kNoPart) {
@@ -103,42 +129,54 @@ private:
             if (!target) {
                 return false;
             }
-            items.push_back({tag('H', side, f.index()), {*self, *target}});
+            start({kHom, side, f.index()});
+            arguments.push_back(*self);
+            arguments.push_back(*target);
+            finish();
         }
         for (AttrId a : s.attrs_from(ob)) {
             const Value& v = x.subpart(a, p);
             if (!v.is_unset()) {
-                Item item{tag('A', side, a.index()), {*self}};
-                value(item, v);
-                items.push_back(std::move(item));
+                start({kAttr, side, a.index()});
+                arguments.push_back(*self);
+                value(v);
+                finish();
             }
         }
         return true;
     }
 
-    bool add_fact(const ACSet& x, char side, ObId ob, Part p) {
+    bool add_fact(const ACSet& x, std::uint32_t side, ObId ob, Part p) {
         const auto& s = x.schema();
-        Item item{tag('F', side, ob.index()), {}};
+        start({kFact, side, ob.index()});
         for (HomId f : s.homs_from(ob)) {
             Part t = x.subpart(f, p);
             if (t == kNoPart) {
-                item.tag += "_";
+                codes.push_back(kUnsetHom);
                 continue;
             }
             auto target = name_of(x, s.hom(f).codom, t);
             if (!target) {
                 return false;
             }
-            item.tag += "#";
-            item.args.push_back(*target);
+            codes.push_back(kSetHom);
+            arguments.push_back(*target);
         }
         for (AttrId a : s.attrs_from(ob)) {
-            value(item, x.subpart(a, p));
+            value(x.subpart(a, p));
         }
-        items.push_back(std::move(item));
+        finish();
         return true;
     }
 };
+
+std::uint64_t hash_words(std::span<const std::uint32_t> words) {
+    std::uint64_t h = hash_mix(words.size());
+    for (std::uint32_t w : words) {
+        h = hash_combine(h, w);
+    }
+    return h;
+}
 
 // Colour refinement: each name's colour from the items it is in, the place it has there and the
 // colours of the other names there, a few rounds; then the names in the order of their colours
@@ -147,29 +185,30 @@ std::vector<std::uint32_t> canonical_order(const Items& in) {
     std::size_t n = in.names.size();
     std::vector<std::uint64_t> colour(n, 0);
     std::vector<std::uint64_t> tags;
+    tags.reserve(in.items.size());
     for (const auto& item : in.items) {
-        tags.push_back(std::hash<std::string>()(item.tag));
+        tags.push_back(hash_words(in.code(item)));
     }
-    std::vector<std::vector<std::uint64_t>> seen(n);
+    // Per name, the hashes of the places it has, gathered as (name, hash) pairs and sorted.
+    std::vector<std::pair<std::uint32_t, std::uint64_t>> seen;
+    seen.reserve(in.arguments.size());
     for (int round = 0; round < 3; ++round) {
-        for (auto& v : seen) {
-            v.clear();
-        }
+        seen.clear();
         for (std::size_t i = 0; i < in.items.size(); ++i) {
-            const auto& args = in.items[i].args;
+            auto args = in.args(in.items[i]);
             for (std::size_t k = 0; k < args.size(); ++k) {
                 std::uint64_t h = hash_combine(tags[i], k);
                 for (std::uint32_t a : args) {
                     h = hash_combine(h, colour[a]);
                 }
-                seen[args[k]].push_back(h);
+                seen.emplace_back(args[k], h);
             }
         }
-        for (std::size_t a = 0; a < n; ++a) {
-            std::sort(seen[a].begin(), seen[a].end());
+        std::sort(seen.begin(), seen.end());
+        for (std::size_t a = 0, j = 0; a < n; ++a) {
             std::uint64_t h = hash_mix(colour[a]);
-            for (std::uint64_t x : seen[a]) {
-                h = hash_combine(h, x);
+            for (; j < seen.size() && seen[j].first == a; ++j) {
+                h = hash_combine(h, seen[j].second);
             }
             colour[a] = h;
         }
@@ -181,36 +220,55 @@ std::vector<std::uint32_t> canonical_order(const Items& in) {
     return order;
 }
 
+// Whether item a's line (its code, then its arguments' final numbers) sorts before b's.
+bool line_less(const Items& in, const std::vector<std::uint32_t>& number, const Items::Item& a,
+               const Items::Item& b) {
+    auto ca = in.code(a), cb = in.code(b);
+    if (ca.size() != cb.size()) {
+        return ca.size() < cb.size();
+    }
+    if (!std::equal(ca.begin(), ca.end(), cb.begin())) {
+        return std::lexicographical_compare(ca.begin(), ca.end(), cb.begin(), cb.end());
+    }
+    auto aa = in.args(a), ab = in.args(b);
+    return std::lexicographical_compare(
+        aa.begin(), aa.end(), ab.begin(), ab.end(),
+        [&](std::uint32_t x, std::uint32_t y) { return number[x] < number[y]; });
+}
+
 } // namespace
+
+std::size_t RepairShape::KeyHash::operator()(const std::vector<std::uint32_t>& key) const {
+    return hash_words(key);
+}
 
 std::optional<RepairShape> repair_shape(const ACSet& initial, const ACSet& goal) {
     Items in;
-    if (!in.add_names(initial) || !in.add(initial, 'i') || !in.add(goal, 'g')) {
+    if (!in.add_names(initial) || !in.add(initial, 0) || !in.add(goal, 1)) {
         return std::nullopt;
     }
     auto order = canonical_order(in);
     std::vector<std::uint32_t> number(order.size());
     RepairShape out;
+    out.names.reserve(order.size());
     for (std::uint32_t k = 0; k < order.size(); ++k) {
         number[order[k]] = k;
         out.names.push_back(in.names[order[k]]);
         out.number.emplace(in.names[order[k]], k);
     }
-    std::vector<std::string> lines;
-    lines.reserve(in.items.size());
+    // The items as a set, whatever order they came in: their lines sorted, each after the
+    // length of its code (which fixes the number of its arguments).
+    std::sort(in.items.begin(), in.items.end(),
+              [&](const auto& a, const auto& b) { return line_less(in, number, a, b); });
+    out.key.reserve(1 + in.items.size() + in.codes.size() + in.arguments.size());
+    out.key.push_back(static_cast<std::uint32_t>(order.size()));
     for (const auto& item : in.items) {
-        std::string line = item.tag;
-        for (std::uint32_t a : item.args) {
-            line += ' ';
-            line += std::to_string(number[a]);
+        auto code = in.code(item);
+        out.key.push_back(static_cast<std::uint32_t>(code.size()));
+        out.key.insert(out.key.end(), code.begin(), code.end());
+        for (std::uint32_t a : in.args(item)) {
+            out.key.push_back(number[a]);
         }
-        lines.push_back(std::move(line));
-    }
-    std::sort(lines.begin(), lines.end());
-    out.key = std::to_string(order.size());
-    for (const auto& line : lines) {
-        out.key += '\n';
-        out.key += line;
     }
     return out;
 }

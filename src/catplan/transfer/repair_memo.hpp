@@ -30,7 +30,12 @@ namespace catplan::transfer {
 
 /// A focused problem up to the names of its parts.
 struct RepairShape {
-    std::string key;                     ///< the same for problems equal up to renaming
+    /// Hashes a key.
+    struct KeyHash {
+        std::size_t operator()(const std::vector<std::uint32_t>& key) const;
+    };
+
+    std::vector<std::uint32_t> key;      ///< the same for problems equal up to renaming
     std::vector<std::string_view> names; ///< per number, the name it stands for here
     std::unordered_map<std::string_view, std::uint32_t> number; ///< per name, its number
 };
@@ -64,7 +69,7 @@ public:
     static std::vector<plan::Step> renamed(const Entry& e, const RepairShape& shape);
 
 private:
-    std::unordered_map<std::string, Entry> entries_;
+    std::unordered_map<std::vector<std::uint32_t>, Entry, RepairShape::KeyHash> entries_;
 };
 
 } // namespace catplan::transfer
