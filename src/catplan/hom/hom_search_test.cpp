@@ -357,6 +357,33 @@ TEST(HomSearchCSet, CallbackCanStop) {
     EXPECT_EQ(all.count, 6u);
 }
 
+// A thread's searches reuse the tables of the ones before (search_engine.cpp): a search inside
+// another's callback, and searches between states of other sizes, count as if each were first.
+TEST(HomSearchCSet, NestedAndSuccessiveSearchesEachCountAlone) {
+    HomSearchOptions monic;
+    monic.monic_all = true;
+    HomSearchOptions bound;
+    bound.bind(kV, 0, 2).bind(kV, 1, 3); // the edge 2 -> 3 of K4
+    std::vector<std::uint64_t> inner;
+    auto outer =
+        for_each_homomorphism(path_graph(2), complete_graph(3), {}, [&](const ACSetMorphism&) {
+            inner.push_back(count_homomorphisms(cycle_graph(3), complete_graph(4), monic).count);
+            inner.push_back(count_homomorphisms(path_graph(2), complete_graph(4), bound).count);
+            return true;
+        });
+    EXPECT_EQ(outer.count, 6u);
+    ASSERT_EQ(inner.size(), 12u);
+    for (std::size_t i = 0; i < inner.size(); i += 2) {
+        EXPECT_EQ(inner[i], 24u);
+        EXPECT_EQ(inner[i + 1], 1u);
+    }
+    // Larger, then smaller, then larger again: no stale image, candidate or index survives.
+    EXPECT_EQ(count_homomorphisms(path_graph(3), complete_graph(5), monic).count, 60u);
+    EXPECT_EQ(count_homomorphisms(path_graph(2), complete_graph(2), monic).count, 2u);
+    EXPECT_EQ(count_homomorphisms(path_graph(2), complete_graph(4), bound).count, 1u);
+    EXPECT_EQ(count_homomorphisms(cycle_graph(3), complete_graph(4), monic).count, 24u);
+}
+
 TEST(HomSearchCSet, EmptyDomainHasExactlyOneMorphism) {
     ACSet empty(graph_schema());
     EXPECT_EQ(count_homomorphisms(empty, complete_graph(3)).count, 1u);

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <fmt/format.h>
 #include <limits>
+#include <memory>
 #include <utility>
 
 namespace catplan::hom::detail {
@@ -71,11 +72,85 @@ struct TrailEntry {
     std::uint32_t b;
 };
 
+// The tables of a search. Matching a small rule in a state is a short search whose tables
+// cost more to allocate and free than to fill, so each thread keeps the tables of its finished
+// searches and the next search reuses them, sized anew (Engine::allocate); a search started
+// inside another's callback takes tables of its own.
+struct Tables {
+    std::vector<std::vector<Part>> assign; // per object: image of each domain part
+    std::vector<std::vector<Part>> inv;    // per monic object: preimage of each codom part
+    std::vector<char> dense_inv;           // per monic object: inv is used (else a scan)
+    std::vector<std::uint64_t> key_wanted; // per object: lookups that a key index would serve
+    std::vector<char> monic;               // per object
+    std::vector<std::vector<std::vector<Part>>> cand; // per object, per part: sorted allowed
+    std::vector<char> has_cand;                       // per object: any candidate set given
+    std::vector<std::vector<Value>> vbind;            // per type: binding of each domain variable
+    std::vector<std::vector<char>> vused;             // per monic type: codomain variable taken
+    std::vector<char> monic_t;                        // per attribute type
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> floating; // (type, var) to enumerate
+    std::vector<KeyIndex> keys;                                    // per object, built on first use
+    std::vector<std::vector<HomRef>> homs_out;                     // per object: the homs out of it
+    std::vector<TrailEntry> trail;
+    ACSetMorphism scratch;
+
+    // Roughly the bytes held by the tables that grow with the states.
+    std::size_t footprint() const {
+        std::size_t n = trail.capacity() * sizeof(TrailEntry);
+        for (std::size_t ob = 0; ob < assign.size(); ++ob) {
+            n += (assign[ob].capacity() + (ob < inv.size() ? inv[ob].capacity() : 0)) * 4;
+        }
+        for (const auto& k : keys) {
+            n += k.parts.capacity() * 4 + k.table.capacity() * sizeof(KeyIndex::Slot);
+        }
+        return n;
+    }
+};
+
+// A thread's tables not in use; tables that grew past kKeptBytes (a search in a large state)
+// are freed rather than kept.
+class TablePool {
+public:
+    std::unique_ptr<Tables> acquire() {
+        if (free_.empty()) {
+            return std::make_unique<Tables>();
+        }
+        auto t = std::move(free_.back());
+        free_.pop_back();
+        return t;
+    }
+
+    void release(std::unique_ptr<Tables> t) {
+        if (t->footprint() <= kKeptBytes) {
+            free_.push_back(std::move(t));
+        }
+    }
+
+private:
+    static constexpr std::size_t kKeptBytes = std::size_t{1} << 20;
+    std::vector<std::unique_ptr<Tables>> free_;
+};
+
+TablePool& table_pool() {
+    thread_local TablePool pool;
+    return pool;
+}
+
 class Engine {
 public:
     Engine(const ACSet& x, const ACSet& y, const HomSearchOptions& opt, SearchMode mode,
            const std::function<bool(const ACSetMorphism&)>* fn)
-        : x_(x), y_(y), s_(x.schema()), opt_(opt), mode_(mode), fn_(fn) {}
+        : x_(x),
+          y_(y),
+          s_(x.schema()),
+          opt_(opt),
+          mode_(mode),
+          fn_(fn),
+          tables_(table_pool().acquire()) {}
+
+    Engine(const Engine&) = delete;
+    Engine& operator=(const Engine&) = delete;
+
+    ~Engine() { table_pool().release(std::move(tables_)); }
 
     HomSearchResult run();
 
@@ -108,22 +183,23 @@ private:
     HomSearchResult result_;
     bool stopped_ = false;
 
-    std::vector<std::vector<Part>> assign_; // per object: image of each domain part
-    std::vector<std::vector<Part>> inv_;    // per monic object: preimage of each codom part
-    std::vector<char> dense_inv_;           // per monic object: inv_ is used (else a scan)
-    std::vector<std::uint64_t> key_wanted_; // per object: lookups that a key index would serve
-    std::vector<char> monic_;               // per object
-    std::vector<std::vector<std::vector<Part>>> cand_; // per object, per part: sorted allowed
-    std::vector<char> has_cand_;                       // per object: any candidate set given
-    std::vector<std::vector<Value>> vbind_;            // per type: binding of each domain variable
-    std::vector<std::vector<char>> vused_;             // per monic type: codomain variable taken
-    std::vector<char> monic_t_;                        // per attribute type
-    std::vector<std::pair<std::uint32_t, std::uint32_t>> floating_; // (type, var) to enumerate
-    std::vector<KeyIndex> keys_;                // per object, built on first use
-    std::vector<std::vector<HomRef>> homs_out_; // per object: the homs out of it
-    std::size_t unassigned_ = 0;                // domain parts without an image
-    std::vector<TrailEntry> trail_;
-    ACSetMorphism scratch_;
+    std::unique_ptr<Tables> tables_;
+    std::vector<std::vector<Part>>& assign_ = tables_->assign;
+    std::vector<std::vector<Part>>& inv_ = tables_->inv;
+    std::vector<char>& dense_inv_ = tables_->dense_inv;
+    std::vector<std::uint64_t>& key_wanted_ = tables_->key_wanted;
+    std::vector<char>& monic_ = tables_->monic;
+    std::vector<std::vector<std::vector<Part>>>& cand_ = tables_->cand;
+    std::vector<char>& has_cand_ = tables_->has_cand;
+    std::vector<std::vector<Value>>& vbind_ = tables_->vbind;
+    std::vector<std::vector<char>>& vused_ = tables_->vused;
+    std::vector<char>& monic_t_ = tables_->monic_t;
+    std::vector<std::pair<std::uint32_t, std::uint32_t>>& floating_ = tables_->floating;
+    std::vector<KeyIndex>& keys_ = tables_->keys;
+    std::vector<std::vector<HomRef>>& homs_out_ = tables_->homs_out;
+    std::size_t unassigned_ = 0; // domain parts without an image
+    std::vector<TrailEntry>& trail_ = tables_->trail;
+    ACSetMorphism& scratch_ = tables_->scratch;
 };
 
 std::uint64_t Engine::codom_key(std::uint32_t ob, Part y) const {
@@ -517,6 +593,7 @@ void Engine::allocate() {
     std::size_t nobs = s_.num_obs(), ntypes = s_.num_attr_types();
     homs_out_.resize(nobs);
     for (std::uint32_t ob = 0; ob < nobs; ++ob) {
+        homs_out_[ob].clear();
         for (HomId f : s_.homs_from(ObId(ob))) {
             homs_out_[ob].push_back(
                 HomRef{s_.hom(f).codom.index(), x_.column(f).data(), y_.column(f).data()});
@@ -529,6 +606,11 @@ void Engine::allocate() {
     cand_.resize(nobs);
     has_cand_.assign(nobs, 0);
     keys_.resize(nobs);
+    for (std::uint32_t ob = 0; ob < nobs; ++ob) {
+        cand_[ob].clear();
+        keys_[ob].built = false;
+    }
+    trail_.clear();
     std::size_t total = 0;
     for (std::uint32_t ob = 0; ob < nobs; ++ob) {
         assign_[ob].assign(x_.num_parts(ObId(ob)), kNoPart);
@@ -614,6 +696,7 @@ bool Engine::prepare() {
                         y_.schema().num_attr_types() == ntypes),
                    "hom search between states on different schemas");
     std::vector<char> iso_ob, no_bind;
+    floating_.clear();
     read_options(iso_ob, no_bind);
     if (!find_floating(no_bind) || !room_for(iso_ob)) {
         return false;
