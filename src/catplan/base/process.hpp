@@ -17,7 +17,7 @@ std::size_t resident_bytes();
 long peak_rss_kib();
 
 /// The memory this process may use on this machine, in bytes: the physical memory, or the
-/// control group's limit when that is lower (0 when unknown).
+/// control group's limit when that is lower (0 when unknown); read at the first call.
 std::size_t physical_memory_bytes();
 
 /// The memory limit a planner applies by default: 75% of physical_memory_bytes (0 when unknown).
