@@ -31,16 +31,14 @@ std::optional<std::string> tuple_term(const acset::ACSet& x, ObId ob, Part p) {
     return fmt::format("{}({})", s.ob(ob).name, fmt::join(args, ", "));
 }
 
-std::vector<std::string> part_words(const acset::ACSet& x, ObId ob, Part p) {
-    std::vector<std::string> words;
-    std::string_view name = x.part_name(ob, p);
-    if (is_user_name(name)) {
-        words.emplace_back(name);
-        return words;
-    }
+namespace {
+
+using Reach = std::tuple<std::uint32_t, Part, std::uint32_t>;
+
+// (object, part, hom) of each named part that reaches p in one hom, in order.
+std::vector<Reach> named_reaches(const acset::ACSet& x, ObId ob, Part p) {
     const auto& s = x.schema();
-    // (object, part, hom) of each named part that reaches p in one hom.
-    std::vector<std::tuple<std::uint32_t, Part, std::uint32_t>> from;
+    std::vector<Reach> from;
     for (HomId f : s.homs_into(ob)) {
         ObId d = s.hom(f).dom;
         for (Part q : x.incident(f, p)) {
@@ -50,8 +48,25 @@ std::vector<std::string> part_words(const acset::ACSet& x, ObId ob, Part p) {
         }
     }
     std::sort(from.begin(), from.end());
-    for (auto [d, q, f] : from) {
-        words.push_back(fmt::format("{}({})", s.hom(HomId(f)).name, x.part_name(ObId(d), q)));
+    return from;
+}
+
+std::string reach_word(const acset::ACSet& x, const Reach& r) {
+    auto [d, q, f] = r;
+    return fmt::format("{}({})", x.schema().hom(HomId(f)).name, x.part_name(ObId(d), q));
+}
+
+} // namespace
+
+std::vector<std::string> part_words(const acset::ACSet& x, ObId ob, Part p) {
+    std::vector<std::string> words;
+    std::string_view name = x.part_name(ob, p);
+    if (is_user_name(name)) {
+        words.emplace_back(name);
+        return words;
+    }
+    for (const auto& r : named_reaches(x, ob, p)) {
+        words.push_back(reach_word(x, r));
     }
     if (auto t = tuple_term(x, ob, p)) {
         words.push_back(std::move(*t));
@@ -69,7 +84,19 @@ std::string part_word(const acset::ACSet& x, ObId ob, Part p) {
     if (p == kNoPart) {
         return "_";
     }
-    return part_words(x, ob, p).front();
+    // The first of part_words, without the others.
+    std::string_view name = x.part_name(ob, p);
+    if (is_user_name(name)) {
+        return std::string(name);
+    }
+    auto from = named_reaches(x, ob, p);
+    if (!from.empty()) {
+        return reach_word(x, from.front());
+    }
+    if (auto t = tuple_term(x, ob, p)) {
+        return std::move(*t);
+    }
+    return x.part_label(ob, p);
 }
 
 namespace {
