@@ -168,10 +168,15 @@ struct Table {
 };
 
 // `Ob = n` and `AttrType = n` (counts) into the state; returns the column statements, which need
-// every count first.
+// every count first. Nothing is allocated until every count is read: a table whose counts go
+// past the limit is not built (its columns are not read either: they could only say that their
+// parts are out of range), so ten million parts declared before the count that crosses the
+// limit cost nothing.
 std::vector<const Expr*> read_counts(Table& t, const MacroCall& form) {
     std::map<std::string, SourceRange> seen;
     std::vector<const Expr*> columns;
+    std::vector<std::pair<schema::Generator, std::uint64_t>> counts;
+    bool over_limit = false;
     for (const auto& st : form.body) {
         if (!st.is_binary("=") || st.args[0].kind != Expr::Kind::Name) {
             t.sink.error(st.range, fmt::format("expected 'Name = value' (an object count, a "
@@ -210,14 +215,21 @@ std::vector<const Expr*> read_counts(Table& t, const MacroCall& form) {
                                      "{} parts and variables, but at most {} are "
                                      "allowed",
                                      lhs.text, count, t.declared + count, kMaxTableParts));
+            over_limit = true;
             continue;
         }
         t.declared += count;
-        if (g->kind == GeneratorKind::Ob) {
-            t.x.add_parts(ObId(g->index), static_cast<std::size_t>(count));
+        counts.emplace_back(*g, count);
+    }
+    if (over_limit) {
+        return {};
+    }
+    for (const auto& [g, count] : counts) {
+        if (g.kind == GeneratorKind::Ob) {
+            t.x.add_parts(ObId(g.index), static_cast<std::size_t>(count));
         } else {
             for (std::uint64_t i = 0; i < count; ++i) {
-                t.x.add_var(AttrTypeId(g->index));
+                t.x.add_var(AttrTypeId(g.index));
             }
         }
     }
