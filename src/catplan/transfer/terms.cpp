@@ -56,9 +56,9 @@ std::string reach_word(const acset::ACSet& x, const Reach& r) {
     return fmt::format("{}({})", x.schema().hom(HomId(f)).name, x.part_name(ObId(d), q));
 }
 
-} // namespace
-
-std::vector<std::string> part_words(const acset::ACSet& x, ObId ob, Part p) {
+// A part's words in order (its name; hom(name) for each named part reaching it; its tuple term;
+// its label), or only the first of them.
+std::vector<std::string> words_of(const acset::ACSet& x, ObId ob, Part p, bool first_only) {
     std::vector<std::string> words;
     std::string_view name = x.part_name(ob, p);
     if (is_user_name(name)) {
@@ -67,12 +67,24 @@ std::vector<std::string> part_words(const acset::ACSet& x, ObId ob, Part p) {
     }
     for (const auto& r : named_reaches(x, ob, p)) {
         words.push_back(reach_word(x, r));
+        if (first_only) {
+            return words;
+        }
     }
     if (auto t = tuple_term(x, ob, p)) {
         words.push_back(std::move(*t));
+        if (first_only) {
+            return words;
+        }
     }
     words.push_back(x.part_label(ob, p));
     return words;
+}
+
+} // namespace
+
+std::vector<std::string> part_words(const acset::ACSet& x, ObId ob, Part p) {
+    return words_of(x, ob, p, false);
 }
 
 bool has_readable_word(const acset::ACSet& x, ObId ob, Part p) {
@@ -84,19 +96,7 @@ std::string part_word(const acset::ACSet& x, ObId ob, Part p) {
     if (p == kNoPart) {
         return "_";
     }
-    // The first of part_words, without the others.
-    std::string_view name = x.part_name(ob, p);
-    if (is_user_name(name)) {
-        return std::string(name);
-    }
-    auto from = named_reaches(x, ob, p);
-    if (!from.empty()) {
-        return reach_word(x, from.front());
-    }
-    if (auto t = tuple_term(x, ob, p)) {
-        return std::move(*t);
-    }
-    return x.part_label(ob, p);
+    return std::move(words_of(x, ob, p, true).front());
 }
 
 namespace {
