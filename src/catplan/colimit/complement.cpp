@@ -54,27 +54,33 @@ struct Span {
 void check_left(const Span& in, Deletion& out) {
     const auto& s = in.x.schema();
     auto outside = parts_outside_image(in.l, in.l_state);
+    // Per part of L, reused from object to object: kept once (kSeen), not kept at all (kDeleted).
+    constexpr char kSeen = 1, kDeleted = 2;
+    std::vector<char> flags;
+    std::vector<std::pair<Part, Part>> by_image;
     for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
         ObId ob(o);
-        std::vector<char> seen(in.l_state.num_parts(ob), 0);
+        if (in.l_state.num_parts(ob) == 0) {
+            continue; // nor any of K, which l sends into L
+        }
+        flags.assign(in.l_state.num_parts(ob), 0);
         for (Part kp = 0; kp < in.k.num_parts(ob); ++kp) {
             Part lp = in.l(ob, kp);
-            if (seen[lp]) {
+            if (flags[lp] & kSeen) {
                 out.violations.push_back(
                     {GluingViolationKind::NotMonic, ob, lp, kNoPart, HomId(), kNoPart,
                      fmt::format("the rule's left leg is not monic: two parts of {} are kept as {}",
                                  s.ob(ob).name, in.l_state.part_label(ob, lp))});
             }
-            seen[lp] = 1;
+            flags[lp] |= kSeen;
         }
-        std::vector<char> deleted(in.l_state.num_parts(ob), 0);
         for (Part p : outside[o]) {
-            deleted[p] = 1;
+            flags[p] |= kDeleted;
             out.parts[o].push_back(in.m(ob, p));
         }
         sort_unique(out.parts[o]);
         // Group L's parts by image; each later member of a group is compared with the first.
-        std::vector<std::pair<Part, Part>> by_image;
+        by_image.clear();
         for (Part p = 0; p < in.l_state.num_parts(ob); ++p) {
             by_image.emplace_back(in.m(ob, p), p);
         }
@@ -86,10 +92,10 @@ void check_left(const Span& in, Deletion& out) {
                 first = i;
             }
             Part q = by_image[first].second;
-            if (first == i || (!deleted[p] && !deleted[q])) {
+            if (first == i || !((flags[p] | flags[q]) & kDeleted)) {
                 continue;
             }
-            Part del = deleted[p] ? p : q;
+            Part del = (flags[p] & kDeleted) ? p : q;
             Part other = del == p ? q : p;
             found.emplace_back(
                 p, GluingViolation{

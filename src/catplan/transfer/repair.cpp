@@ -33,9 +33,8 @@ bool embeds(const ACSet& goal, const ACSet& x) {
     return hom::is_homomorphic(goal, x, opt);
 }
 
-// What replaying steps on y gives: each step's match and the state reached.
+// What replaying steps on y gives: the state reached.
 struct Replayed {
-    std::vector<ACSetMorphism> matches;
     NamedState state;
     bool named = false; // the subgoal embeds in the state by names
 };
@@ -46,7 +45,7 @@ struct Replayed {
 Result<Replayed> replay(const plan::Domain& target, const NamedState& y,
                         const std::vector<plan::Step>& steps, const ACSet& subgoal, bool by_names,
                         const CreatedName& name) {
-    Replayed out{{}, y};
+    Replayed out{y};
     NamedState& z = out.state;
     for (const auto& step : steps) {
         const auto* rule = target.find_rule(step.action);
@@ -61,7 +60,6 @@ Result<Replayed> replay(const plan::Domain& target, const NamedState& y,
         if (!applied) {
             return fail(applied.error());
         }
-        out.matches.push_back(std::move(*m));
     }
     out.named = embeds_by_names(z, subgoal);
     if (!out.named && (by_names || !embeds(subgoal, z.state()))) {
@@ -74,7 +72,6 @@ Result<Replayed> replay(const plan::Domain& target, const NamedState& y,
 void take(Repair& out, std::vector<plan::Step> steps, Replayed replayed) {
     out.found = true;
     out.steps = std::move(steps);
-    out.matches = std::move(replayed.matches);
     out.reached.emplace(std::move(replayed.state));
     out.by_names = replayed.named;
 }

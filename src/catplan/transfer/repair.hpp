@@ -62,8 +62,6 @@ struct RepairOptions {
 struct Repair {
     bool found = false;
     std::vector<plan::Step> steps; ///< arguments name parts of y by name
-    /// The match of each step in the state the steps before it lead to, from y.
-    std::vector<hom::ACSetMorphism> matches;
     /// The state the steps reach from y, its created parts named by the repair's naming function
     /// (empty when no step was needed): the transfer takes it as its next target state rather
     /// than applying the steps again.

@@ -77,8 +77,7 @@ constexpr std::size_t kSegmentBytes = std::size_t{1} << 20;
 } // namespace
 
 StateRegistry::StateRegistry(const StatePacker& packer, Budget& budget)
-    : packer_(packer),
-      budget_(budget),
+    : budget_(budget),
       words_(packer.words()),
       per_segment_(static_cast<std::uint32_t>(
           std::max<std::size_t>(1, kSegmentBytes / (packer.words() * sizeof(Word))))),

@@ -95,7 +95,6 @@ private:
     void grow();
     Word* slot_for(StateId id);
 
-    const StatePacker& packer_;
     Budget& budget_;
     std::uint32_t words_;
     std::uint32_t per_segment_;
