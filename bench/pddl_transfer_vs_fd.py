@@ -18,7 +18,8 @@ target domain, whole process, writing the target IPC plan (-o) and the target pr
 process. VAL checks the source plan, the transferred plan and FD's target plan on their own domain
 files. Prints, per direction and size, the medians of --transfer-runs runs of the transfer and
 of --runs runs of replanning (and FD's own search time, from its log), their ratios and the plan
-lengths, and the load average of the machine before and after. Each run is timed whole, wall and CPU (user + system of the
+lengths, the start-up floor of the harness (a process that does nothing, and `catplan --version`,
+timed the same way), and the load average of the machine before and after. Each run is timed whole, wall and CPU (user + system of the
 process and its children): on a shared machine the wall time of a short process depends on the
 load more than its CPU time does.
 
@@ -165,6 +166,18 @@ def one_size(a, direction, n, out):
     return row
 
 
+def start_floor(a):
+    """Medians (wall s, CPU s) of a process that does nothing (/bin/true) and of `catplan
+    --version`, timed as the transfer is, runs interleaved: what no transfer can go below here."""
+    runs = {"true": [], "version": []}
+    for _ in range(a.transfer_runs):
+        for key, cmd in (("true", ["/bin/true"]), ("version", [str(a.catplan), "--version"])):
+            t, r = timed(cmd, a.limit)
+            runs[key].append((t, r.cpu))
+    return {key: (statistics.median(t for t, _ in v), statistics.median(c for _, c in v))
+            for key, v in runs.items()}
+
+
 def batch(a, map_file, map_name, problem, splan, d):
     plans = d / "plans"
     shutil.rmtree(plans, ignore_errors=True)
@@ -200,8 +213,10 @@ def main():
     p.add_argument("--limit", type=int, default=900)
     a = p.parse_args()
     load_before = os.getloadavg()
+    floors = [start_floor(a)]
     rows = [r for direction in a.directions.split(",") for n in map(int, a.blocks.split(","))
             if (r := one_size(a, direction, n, a.out))]
+    floors.append(start_floor(a))
     load_after = os.getloadavg()
     print(f"load average (1, 5, 15 min) before: {load_before[0]:.2f} {load_before[1]:.2f} "
           f"{load_before[2]:.2f}; after: {load_after[0]:.2f} {load_after[1]:.2f} {load_after[2]:.2f}")
@@ -217,6 +232,15 @@ def main():
               f"| {r['replan_s']:.3f} ({r['replan_cpu']:.3f}; {r['replan_search_s']:.3f}) "
               f"| {r['replan_s'] / r['transfer_s']:.0f}x, "
               f"{r['replan_cpu'] / max(r['transfer_cpu'], 1e-3):.0f}x{bound} | {ok} |")
+    floor = {k: tuple(statistics.mean(f[k][i] for f in floors) for i in (0, 1)) for k in floors[0]}
+    print(f"\nstart-up in this harness (medians of {a.transfer_runs} runs, before and after the rows, "
+          f"averaged): a process that does nothing (/bin/true) {floor['true'][0] * 1e3:.1f} ms wall "
+          f"({floor['true'][1] * 1e3:.1f} ms CPU); `catplan --version` "
+          f"{floor['version'][0] * 1e3:.1f} ms wall ({floor['version'][1] * 1e3:.1f} ms CPU)")
+    for r in rows:
+        if r["replan_s"] < 100 * r["transfer_s"]:
+            print(f"{r['direction']} {r['n']}: 100x needs the whole transfer in "
+                  f"{r['replan_s'] * 10:.1f} ms of wall time; it took {r['transfer_s'] * 1e3:.1f}")
     batched = [r for r in rows if "batch_jobs1_s" in r]
     if batched:
         print(f"\n| blocks | {a.batch} plans, --jobs 1 s | --jobs 2 s | speed-up |")
