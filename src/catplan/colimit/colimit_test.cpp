@@ -170,6 +170,24 @@ namespace {
 
 // A kept edge whose target is deleted: dangling, unless the complement opens that hom (the rule
 // redirects it); an open attribute is unset in Z, the others keep X's value.
+TEST(PushoutComplement, ReportsALeftLegThatIsNotMonic) {
+    Labelled g;
+    ACSet k = g.path({"", ""}); // two vertices and the edge between them, both kept as one vertex
+    k.remove_part(g.e, 0);
+    ACSet l = g.path({""});
+    ACSet x = g.path({"a"});
+    auto lk = g.map({0, 0}, {}, {Value::var(0), Value::var(0)});
+    auto m = g.map({0}, {}, {Value::string("a")});
+    ASSERT_TRUE(hom::is_natural(lk, k, l));
+    ASSERT_TRUE(hom::is_natural(m, l, x));
+    auto v = gluing_violations(k, l, x, lk, m);
+    ASSERT_EQ(v.size(), 1u);
+    EXPECT_EQ(v[0].kind, GluingViolationKind::NotMonic);
+    EXPECT_EQ(v[0].ob, g.v);
+    EXPECT_EQ(v[0].part, 0u);
+    EXPECT_FALSE(pushout_complement(k, l, x, lk, m).has_value());
+}
+
 TEST(PushoutComplement, OpenCellsAreUnsetAndNeverDangle) {
     Labelled g;
     ACSet l = g.path({"x", "y"}); // L: x -> y, delete y, keep x and the edge
