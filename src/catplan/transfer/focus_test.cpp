@@ -159,6 +159,31 @@ TEST(RepairMemo, OtherShapesHaveOtherKeys) {
     EXPECT_EQ(memo.find(*s3), nullptr);
 }
 
+TEST(RepairMemo, TheSameChangeInAnotherFrameHasTheSameChangeShape) {
+    Blocks b;
+    // B from A onto C, D alone; and D from C onto A, on a tower B-C, A alone (B->D, A->C, C->A).
+    ACSet i1 = b.state(4, {{0, 1}, {2}, {3}}), g1 = b.state(4, {{0}, {2, 1}, {3}});
+    ACSet i2 = b.state(4, {{1, 2, 3}, {0}}), g2 = b.state(4, {{1, 2}, {0, 3}});
+    auto s1 = repair_shape(i1, g1), s2 = repair_shape(i2, g2);
+    ASSERT_TRUE(s1 && s2);
+    EXPECT_NE(s1->key, s2->key); // the frames differ: D clear; B under C
+    auto c1 = change_shape(i1, g1), c2 = change_shape(i2, g2);
+    ASSERT_TRUE(c1 && c2);
+    EXPECT_EQ(c1->key, c2->key);
+    EXPECT_EQ(c1->names.size(), 3u); // D is frame only
+    RepairMemo memo;
+    memo.remember(*c1, {plan::Step{"move", {"B", "A", "C"}, {}}}, 0);
+    const auto* e = memo.find(*c2);
+    ASSERT_NE(e, nullptr);
+    auto renamed = RepairMemo::renamed(*e, *c2);
+    ASSERT_EQ(renamed.size(), 1u);
+    EXPECT_EQ(renamed[0].to_string(), "move(D, C, A)");
+    // B from A to the table is another change.
+    auto c3 = change_shape(i1, b.state(4, {{0}, {1}, {2}, {3}}));
+    ASSERT_TRUE(c3);
+    EXPECT_NE(c1->key, c3->key);
+}
+
 TEST(RepairMemo, APartWithoutANameHasNoShape) {
     Blocks b;
     ACSet i = b.state(2, {{0, 1}});

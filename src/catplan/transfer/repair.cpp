@@ -142,11 +142,12 @@ plan::SearchResult Repairer::search_by_names(const plan::ProblemPtr& p,
     return plan::find_plan(*p, options);
 }
 
-// The plan remembered for a focus of this shape, renamed and replayed on y; `searched_before`
-// says whether the shape was searched at all (a failed search need not be run again).
-bool Repairer::use_memo(const Request& q, const RepairShape& shape, Repair& out,
-                        bool& searched_before) const {
-    const auto* e = memo_.find(shape);
+// The plan that `memo` holds for a focus of this shape, renamed and replayed on y;
+// `searched_before` says whether the shape was searched at all (a failed search need not be run
+// again).
+bool Repairer::use_memo(const Request& q, const RepairMemo& memo, const RepairShape& shape,
+                        Repair& out, bool& searched_before) const {
+    const auto* e = memo.find(shape);
     searched_before = e != nullptr;
     if (e == nullptr || !e->solved) {
         return false;
@@ -186,12 +187,22 @@ bool Repairer::focus_repair(const Request& q, const Focus& focus, Repair& out) {
         p->goal = std::make_shared<const ACSet>(std::move(fp.goal));
         auto shape = repair_shape(*p->initial, *p->goal);
         bool searched_before = false;
-        if (shape && use_memo(q, *shape, out, searched_before)) {
+        if (shape && use_memo(q, memo_, *shape, out, searched_before)) {
             out.focus_parts = fp.parts;
             return true;
         }
         if (searched_before) {
             continue; // the same search, renamed, found nothing or nothing that replays here
+        }
+        // The same change in another frame: its plan, if it replays here, needs no search.
+        auto change = change_shape(*p->initial, *p->goal);
+        bool changed_before = false;
+        if (change && use_memo(q, changes_, *change, out, changed_before)) {
+            if (shape) {
+                memo_.remember(*shape, out.steps, *out.reused_from);
+            }
+            out.focus_parts = fp.parts;
+            return true;
         }
         auto r = search_by_names(p, options);
         add_stats(out.stats, r.stats);
@@ -205,6 +216,9 @@ bool Repairer::focus_repair(const Request& q, const Focus& focus, Repair& out) {
         }
         if (shape) {
             memo_.remember(*shape, r.plan->steps, q.step);
+        }
+        if (change) {
+            changes_.remember(*change, r.plan->steps, q.step);
         }
         auto replayed = replay(*target_, q.y, r.plan->steps, q.subgoal, true, q.name);
         if (!replayed) {

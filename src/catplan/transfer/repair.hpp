@@ -104,7 +104,7 @@ private:
     };
 
     bool focus_repair(const Request& q, const Focus& focus, Repair& out);
-    bool use_memo(const Request& q, const RepairShape& shape, Repair& out,
+    bool use_memo(const Request& q, const RepairMemo& memo, const RepairShape& shape, Repair& out,
                   bool& searched_before) const;
     void whole_repair(const Request& q, Repair& out);
     plan::SearchResult search_by_names(const plan::ProblemPtr& p,
@@ -116,6 +116,7 @@ private:
     std::optional<plan::ground::ReusableTask> task_;
     std::string why_no_task_; ///< why it could not be compiled (then each repair compiles its own)
     RepairMemo memo_;         ///< the plans of the focuses searched, by shape
+    RepairMemo changes_;      ///< the same plans, by the shape of what they change
 };
 
 } // namespace catplan::transfer

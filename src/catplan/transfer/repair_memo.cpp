@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <functional>
+#include <limits>
 #include <numeric>
 #include <span>
 
@@ -236,17 +237,10 @@ bool line_less(const Items& in, const std::vector<std::uint32_t>& number, const 
         [&](std::uint32_t x, std::uint32_t y) { return number[x] < number[y]; });
 }
 
-} // namespace
-
-std::size_t RepairShape::KeyHash::operator()(const std::vector<std::uint32_t>& key) const {
-    return hash_words(key);
-}
-
-std::optional<RepairShape> repair_shape(const ACSet& initial, const ACSet& goal) {
-    Items in;
-    if (!in.add_names(initial) || !in.add(initial, 0) || !in.add(goal, 1)) {
-        return std::nullopt;
-    }
+// The shape of the items `in` holds: the names numbered by canonical_order, and the items as a
+// set, whatever order they came in (their lines sorted, each after the length of its code, which
+// fixes the number of its arguments).
+RepairShape shape_of(Items& in) {
     auto order = canonical_order(in);
     std::vector<std::uint32_t> number(order.size());
     RepairShape out;
@@ -256,8 +250,6 @@ std::optional<RepairShape> repair_shape(const ACSet& initial, const ACSet& goal)
         out.names.push_back(in.names[order[k]]);
         out.number.emplace(in.names[order[k]], k);
     }
-    // The items as a set, whatever order they came in: their lines sorted, each after the
-    // length of its code (which fixes the number of its arguments).
     std::sort(in.items.begin(), in.items.end(),
               [&](const auto& a, const auto& b) { return line_less(in, number, a, b); });
     out.key.reserve(1 + in.items.size() + in.codes.size() + in.arguments.size());
@@ -271,6 +263,101 @@ std::optional<RepairShape> repair_shape(const ACSet& initial, const ACSet& goal)
         }
     }
     return out;
+}
+
+// An item's line without its side (every code's second word): what it says of which names.
+std::vector<std::uint32_t> unsided_line(const Items& in, const Items::Item& item) {
+    auto code = in.code(item);
+    auto args = in.args(item);
+    // The code's length first, as in a shape's key: it fixes where the arguments start.
+    std::vector<std::uint32_t> w{static_cast<std::uint32_t>(code.size()), code[0]};
+    w.insert(w.end(), code.begin() + 2, code.end());
+    w.insert(w.end(), args.begin(), args.end());
+    return w;
+}
+
+// Which items are frame: said alike of the initial state and of the goal, paired off one to one.
+std::vector<char> frame_items(const Items& in) {
+    std::vector<std::pair<std::vector<std::uint32_t>, std::uint32_t>> lines; // (line, item)
+    lines.reserve(in.items.size());
+    for (std::uint32_t i = 0; i < in.items.size(); ++i) {
+        lines.emplace_back(unsided_line(in, in.items[i]), i);
+    }
+    std::sort(lines.begin(), lines.end());
+    std::vector<char> frame(in.items.size(), 0);
+    for (std::size_t k = 0; k < lines.size();) {
+        std::size_t end = k;
+        std::vector<std::uint32_t> sides[2];
+        for (; end < lines.size() && lines[end].first == lines[k].first; ++end) {
+            auto i = lines[end].second;
+            sides[in.code(in.items[i])[1]].push_back(i);
+        }
+        for (std::size_t j = 0; j < std::min(sides[0].size(), sides[1].size()); ++j) {
+            frame[sides[0][j]] = frame[sides[1][j]] = 1;
+        }
+        k = end;
+    }
+    return frame;
+}
+
+// The items of `in` that are not frame (what the repair changes), with the names they mention,
+// numbered anew in the order they come.
+Items change_of(const Items& in) {
+    auto frame = frame_items(in);
+    Items out;
+    constexpr auto kUnnumbered = std::numeric_limits<std::uint32_t>::max();
+    std::vector<std::uint32_t> renumber(in.names.size(), kUnnumbered);
+    for (std::size_t i = 0; i < in.items.size(); ++i) {
+        if (frame[i]) {
+            continue;
+        }
+        const auto& item = in.items[i];
+        auto c = static_cast<std::uint32_t>(out.codes.size());
+        auto a = static_cast<std::uint32_t>(out.arguments.size());
+        auto code = in.code(item);
+        out.codes.insert(out.codes.end(), code.begin(), code.end());
+        for (std::uint32_t n : in.args(item)) {
+            if (renumber[n] == kUnnumbered) {
+                renumber[n] = static_cast<std::uint32_t>(out.names.size());
+                out.names.push_back(in.names[n]);
+                out.number.emplace(in.names[n], renumber[n]);
+            }
+            out.arguments.push_back(renumber[n]);
+        }
+        out.items.push_back({c, static_cast<std::uint32_t>(out.codes.size()), a,
+                             static_cast<std::uint32_t>(out.arguments.size())});
+    }
+    return out;
+}
+
+// The items of a repair's problem, or nullopt when a part that homs point into has no name (or
+// a goal part no namesake in the initial state).
+std::optional<Items> items_of(const ACSet& initial, const ACSet& goal) {
+    Items in;
+    if (!in.add_names(initial) || !in.add(initial, 0) || !in.add(goal, 1)) {
+        return std::nullopt;
+    }
+    return in;
+}
+
+} // namespace
+
+std::size_t RepairShape::KeyHash::operator()(const std::vector<std::uint32_t>& key) const {
+    return hash_words(key);
+}
+
+std::optional<RepairShape> repair_shape(const ACSet& initial, const ACSet& goal) {
+    auto in = items_of(initial, goal);
+    return in ? std::optional(shape_of(*in)) : std::nullopt;
+}
+
+std::optional<RepairShape> change_shape(const ACSet& initial, const ACSet& goal) {
+    auto in = items_of(initial, goal);
+    if (!in) {
+        return std::nullopt;
+    }
+    auto change = change_of(*in);
+    return shape_of(change);
 }
 
 const RepairMemo::Entry* RepairMemo::find(const RepairShape& shape) const {

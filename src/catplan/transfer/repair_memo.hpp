@@ -14,6 +14,11 @@
 // (the memo then misses, and searches); a key is never shared by problems of different shapes.
 // Whatever the memo gives is replayed on the whole target state and the subgoal checked
 // (repair.cpp), as any plan a search found.
+//
+// A focus keeps the facts about its names that the repair does not change (a block's other
+// neighbours, whether it was clear before and after), so the same move in two contexts is two
+// shapes. A second memo keys the plans by the shape of the change alone (change_shape); its plan
+// is tried, and replayed, before a new search.
 
 #include "catplan/acset/acset.hpp"
 #include "catplan/plan/domain.hpp"
@@ -43,6 +48,12 @@ struct RepairShape {
 /// The shape of a repair's problem, or nullopt when a part that homs point into has no name
 /// (or a goal part no namesake in the initial state).
 std::optional<RepairShape> repair_shape(const acset::ACSet& initial, const acset::ACSet& goal);
+
+/// The shape of what a repair's problem changes: the same, without its frame (what it says alike
+/// of the initial state and of the goal) and the names only the frame mentions; nullopt as for
+/// repair_shape. Problems that differ only in their frame share it, so a plan of one is a guess
+/// for the other, which the replay on the whole state then checks.
+std::optional<RepairShape> change_shape(const acset::ACSet& initial, const acset::ACSet& goal);
 
 class RepairMemo {
 public:
