@@ -327,6 +327,8 @@ Outcome run_transfer(const TransferCommandArgs& a, const TransferInputs& in, std
     auto options = transfer_options(a.in, in);
     // JSON gives each match with the state it went into.
     options.keep_states = a.trace || a.format != "text";
+    // Only the text report of a plan in catplan's syntax prints the bindings.
+    options.describe_bindings = a.format == "text" && !in.pddl;
     Outcome r;
     r.t = transfer::transfer_plan(*in.map, *in.problem, in.plan, options);
     r.transfer_peak_kib = catplan::peak_rss_kib();

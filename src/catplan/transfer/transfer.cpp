@@ -291,9 +291,11 @@ private:
         StepTransfer st;
         st.source = s;
         st.target = step_of(*a->target, matches[0], y_->state());
-        st.source_bindings = describe_bindings(*m, a->source->L, x_->state());
-        st.target_bindings =
-            describe_bindings(matches[0], a->target->L, y_->state(), &a->l_origins);
+        if (options_.describe_bindings) {
+            st.source_bindings = describe_bindings(*m, a->source->L, x_->state());
+            st.target_bindings =
+                describe_bindings(matches[0], a->target->L, y_->state(), &a->l_origins);
+        }
         st.lost_parameters = lost_parameters(*a->source, *a->target);
         if (comparing()) {
             check_->before(*m, *x_, matches[0], *y_);
@@ -367,7 +369,9 @@ private:
         }
         StepTransfer st;
         st.source = plan_.steps[i];
-        st.source_bindings = describe_bindings(m, a.source->L, x_->state());
+        if (options_.describe_bindings) {
+            st.source_bindings = describe_bindings(m, a.source->L, x_->state());
+        }
         if (!matches.empty() && comparing()) {
             check_->before(m, *x_, matches[0], *y_);
         }
@@ -395,7 +399,9 @@ private:
         ACSetMorphism mt = transport(mg, c);
         st.kind = StepTransfer::Kind::Corresponds;
         st.target = step_of(*c.target, mt, y_->state());
-        st.target_bindings = describe_bindings(mt, c.target->L, y_->state());
+        if (options_.describe_bindings) {
+            st.target_bindings = describe_bindings(mt, c.target->L, y_->state());
+        }
         auto applied = y_->apply(*c.target, mt, [&](ObId ob, Part q) {
             const auto& origin = a.r_origins[ob.index()];
             Part qg = generated_part(c, ob, q);

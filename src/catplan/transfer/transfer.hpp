@@ -82,6 +82,9 @@ MigratedDomain migrate_domain(const SchemaMap& f, const plan::Domain& d,
 struct TransferOptions {
     /// Keep every source state X_i and target state Y_i (for a trace or a report).
     bool keep_states = false;
+    /// Write each step's source_bindings and target_bindings (text for people, which the text
+    /// report and the HTML report print); off, they stay empty.
+    bool describe_bindings = true;
     /// Rename the target's named parts after their most specific target type (bread1, ...).
     bool rename_by_type = false;
     /// The goal intended in the target domain (an instance of F's target schema): the verdict
@@ -124,7 +127,7 @@ struct StepTransfer {
     /// Δ_F(R) -> Y_i for a generated step; empty otherwise, and with follow_source (Y_i is then
     /// rebuilt as Δ_F(X_i), which the comatch does not land in).
     ACSetMorphism target_comatch;
-    std::string source_bindings; ///< "block ↦ E, underblock ↦ D, ..."
+    std::string source_bindings; ///< "block ↦ E, underblock ↦ D, ..." (describe_bindings)
     std::string target_bindings; ///< the same for the target match
     /// Parameters of the source action that its migration lost (the map does not see them).
     std::vector<std::string> lost_parameters;

@@ -214,6 +214,25 @@ TEST(Transfer, ConjunctiveMapCarriesMatchesByName) {
     EXPECT_DOUBLE_EQ(r.verdict.goal.fraction(), 1.0);
 }
 
+TEST(Transfer, BindingsAreDescribedOnlyWhenAskedFor) {
+    Fixture fx;
+    Kitchen k = kitchen();
+    SchemaMap f = kitchen_map(fx.t, k);
+    TransferOptions opt;
+    opt.describe_bindings = false;
+    auto r = transfer_plan(f, *fx.problem, fx.plan, opt);
+    ASSERT_TRUE(r.verdict.valid()) << r.verdict.reason();
+    ASSERT_EQ(r.steps.size(), 2u);
+    for (const auto& st : r.steps) {
+        EXPECT_EQ(st.source_bindings, "");
+        EXPECT_EQ(st.target_bindings, "");
+    }
+    // The same plan, the same verdict, as with the bindings described (the default).
+    auto described = transfer_plan(f, *fx.problem, fx.plan);
+    EXPECT_EQ(target_plan(r), target_plan(described));
+    EXPECT_NE(described.steps[0].source_bindings, "");
+}
+
 TEST(Transfer, RenameByTypeNamesPartsAfterTheirMostSpecificType) {
     Fixture fx;
     Kitchen k = kitchen();
