@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -182,6 +184,90 @@ TEST(RepairMemo, TheSameChangeInAnotherFrameHasTheSameChangeShape) {
     auto c3 = change_shape(i1, b.state(4, {{0}, {1}, {2}, {3}}));
     ASSERT_TRUE(c3);
     EXPECT_NE(c1->key, c3->key);
+}
+
+// Random towers of blocks first..first+n-1 (seeded), bottom to top.
+std::vector<std::vector<int>> random_towers(std::mt19937& rng, int first, int n) {
+    std::vector<int> order(static_cast<std::size_t>(n));
+    for (int i = 0; i < n; ++i) {
+        order[static_cast<std::size_t>(i)] = first + i;
+    }
+    std::shuffle(order.begin(), order.end(), rng);
+    std::vector<std::vector<int>> towers;
+    for (int b : order) {
+        if (towers.empty() || rng() % 3 == 0) {
+            towers.emplace_back();
+        }
+        towers.back().push_back(b);
+    }
+    return towers;
+}
+
+// The same towers, the top of one moved onto another (or onto the table).
+std::vector<std::vector<int>> move_one(std::mt19937& rng, std::vector<std::vector<int>> towers) {
+    auto from = rng() % towers.size();
+    int b = towers[from].back();
+    towers[from].pop_back();
+    auto to = rng() % (towers.size() + 1);
+    if (to == from || to == towers.size()) {
+        towers.push_back({b}); // to the table
+    } else {
+        towers[to].push_back(b);
+    }
+    std::erase_if(towers, [](const auto& t) { return t.empty(); });
+    return towers;
+}
+
+// x with its blocks renamed by `name`, each part keeping its place.
+ACSet renamed_blocks(const Blocks& b, ACSet x, const std::vector<std::string>& name) {
+    for (Part p = 0; p < x.num_parts(b.block); ++p) {
+        x.set_part_name(b.block, p, name[p]);
+    }
+    return x;
+}
+
+TEST(RepairMemo, ShapesOfRandomMovesAreKeptByRenamingAndChangesByAddingAFrame) {
+    Blocks b;
+    for (unsigned seed = 0; seed < 40; ++seed) {
+        std::mt19937 rng(seed);
+        int n = 2 + static_cast<int>(rng() % 5), extra = 1 + static_cast<int>(rng() % 3);
+        auto towers = random_towers(rng, 0, n);
+        auto moved = move_one(rng, towers);
+        ACSet i = b.state(n, towers), g = b.state(n, moved);
+        // Renamed, every part in its place: the same keys, and names that correspond.
+        std::vector<std::string> names;
+        for (int k = 0; k < n; ++k) {
+            names.push_back("x" + std::to_string((k * 7 + static_cast<int>(seed)) % 97));
+        }
+        std::sort(names.begin(), names.end());
+        names.erase(std::unique(names.begin(), names.end()), names.end());
+        ASSERT_EQ(names.size(), static_cast<std::size_t>(n));
+        std::shuffle(names.begin(), names.end(), rng);
+        ACSet ri = renamed_blocks(b, i, names), rg = renamed_blocks(b, g, names);
+        auto s = repair_shape(i, g), rs = repair_shape(ri, rg);
+        auto c = change_shape(i, g), rc = change_shape(ri, rg);
+        ASSERT_TRUE(s && rs && c && rc) << "seed " << seed;
+        EXPECT_EQ(s->key, rs->key) << "seed " << seed;
+        EXPECT_EQ(c->key, rc->key) << "seed " << seed;
+        ASSERT_EQ(c->names.size(), rc->names.size());
+        for (std::size_t k = 0; k < c->names.size(); ++k) {
+            auto block = static_cast<std::size_t>(c->names[k][0] - 'A');
+            EXPECT_EQ(rc->names[k], names[block]) << "seed " << seed;
+        }
+        // More blocks that stay where they are: another problem, the same change.
+        auto framed = towers, framed_moved = moved;
+        for (const auto& t : random_towers(rng, n, extra)) {
+            framed.push_back(t);
+            framed_moved.push_back(t);
+        }
+        ACSet fi = b.state(n + extra, framed), fg = b.state(n + extra, framed_moved);
+        auto fs = repair_shape(fi, fg);
+        auto fc = change_shape(fi, fg);
+        ASSERT_TRUE(fs && fc);
+        EXPECT_NE(fs->key, s->key) << "seed " << seed;
+        EXPECT_EQ(fc->key, c->key) << "seed " << seed;
+        EXPECT_EQ(fc->names, c->names) << "seed " << seed;
+    }
 }
 
 TEST(RepairMemo, APartWithoutANameHasNoShape) {
