@@ -121,6 +121,30 @@ TEST(Focus, ComparesByNamesAndSaysWhenItCannot) {
     EXPECT_EQ(g.error(), "the subgoal's Block D has no namesake in the target state");
 }
 
+TEST(Focus, NamesOutOfOrderOrSharedAreLookedUp) {
+    Blocks b;
+    NamedState y(b.state(3, {{0, 1}, {2}})); // B on A; C
+    // A subgoal without A: its blocks are not Y's first blocks, so each is looked up by name.
+    ACSet g(b.s);
+    g.add_part(b.block, "B");
+    g.add_part(b.block, "C");
+    b.add_on(g, 0, 1);
+    auto f = Focus::of(y, g);
+    ASSERT_TRUE(f) << f.error();
+    EXPECT_EQ(f->seeds(), 2u); // B and C, the arguments of on(B, C), which Y lacks
+    // The same move in a subgoal that lists Y's blocks in Y's order: A is clear there too.
+    auto in_order = Focus::of(y, b.state(3, {{0}, {2, 1}}));
+    ASSERT_TRUE(in_order) << in_order.error();
+    EXPECT_EQ(in_order->seeds(), 3u);
+    // A name two blocks of Y share has no namesake, though the subgoal lists the names in order.
+    ACSet twice = b.state(3, {{0, 1}, {2}});
+    twice.set_part_name(b.block, 2, "A");
+    NamedState z(twice);
+    auto shared = Focus::of(z, twice);
+    ASSERT_FALSE(shared);
+    EXPECT_NE(shared.error().find("has no namesake"), std::string::npos) << shared.error();
+}
+
 TEST(RepairMemo, ProblemsEqualUpToNamesShareAPlanRenamed) {
     Blocks b;
     // B on A, goal B on C; and, renamed by A->D, B->C, C->A, D->B: C on D, goal C on A.

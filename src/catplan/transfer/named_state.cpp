@@ -8,7 +8,10 @@
 
 namespace catplan::transfer {
 NamedState::NamedState(acset::ACSet x)
-    : x_(std::move(x)), index_(x_.schema().num_obs()), suffix_hints_(index_.size()) {
+    : x_(std::move(x)),
+      index_(x_.schema().num_obs()),
+      ambiguous_(index_.size(), 0),
+      suffix_hints_(index_.size()) {
     for (std::uint32_t o = 0; o < index_.size(); ++o) {
         index_[o].reserve(x_.num_parts(ObId(o)));
         for (Part p = 0; p < x_.num_parts(ObId(o)); ++p) {
@@ -80,6 +83,7 @@ void NamedState::add(ObId ob, Part p) {
     }
     auto [it, fresh] = index_[ob.index()].emplace(n, p);
     if (!fresh && it->second != p) {
+        ambiguous_[ob.index()] += it->second != kNoPart;
         it->second = kNoPart;
     }
 }
@@ -109,6 +113,7 @@ void NamedState::moved(ObId ob, Part p, Part survivors) {
         return;
     }
     bool shared = e == kNoPart || (e < survivors && x_.part_name(ob, e) == n);
+    ambiguous_[ob.index()] += shared && e != kNoPart;
     e = shared ? kNoPart : p;
 }
 

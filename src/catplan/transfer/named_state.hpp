@@ -42,6 +42,9 @@ public:
         return it != index_[ob.index()].end() && it->second == kNoPart;
     }
 
+    /// Whether any name has been shared by two parts of ob (it then stays taken and ambiguous).
+    bool has_ambiguous_names(ObId ob) const { return ambiguous_[ob.index()] > 0; }
+
     /// Applies rule at m in place, naming each created part with name_of(ob, part of R); returns
     /// the comatch R -> X.
     Result<hom::ACSetMorphism> apply(const rewrite::Rule& rule, const hom::ACSetMorphism& m,
@@ -71,6 +74,7 @@ private:
     acset::ACSet x_;
     /// Per object: name -> the part that has it (kNoPart when several do).
     std::vector<Index> index_;
+    std::vector<std::size_t> ambiguous_; ///< per object, the names that became ambiguous
     /// Per object: for each base fresh_name had to suffix, the smallest suffix that may be free.
     std::vector<std::map<std::string, std::uint64_t, std::less<>>> suffix_hints_;
 };
