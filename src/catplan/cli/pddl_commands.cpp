@@ -68,6 +68,17 @@ std::string cost_words(const pddl::Import& im, const std::string& action, std::s
                        terms.empty() ? "0" : fmt::format("{}", fmt::join(terms, " + ")));
 }
 
+/// The negative literals of the problem's goal, as PDDL writes them ("(not (at t1 hq))").
+std::vector<std::string> negative_goals(const pddl::Import& im) {
+    std::vector<std::string> out;
+    for (const auto& l : im.pddl_problem->goal) {
+        if (!l.positive) {
+            out.push_back(l.to_string());
+        }
+    }
+    return out;
+}
+
 /// The imported domain and problem in catplan's language, the rules as comments.
 std::string import_text(const pddl::Import& im, const std::string& domain_file) {
     std::string out = fmt::format("# Imported by catplan from {}.\n", domain_file);
@@ -78,6 +89,14 @@ std::string import_text(const pddl::Import& im, const std::string& domain_file) 
     if (im.problem != nullptr) {
         out += lang::print_instance(*im.problem->initial, "Initial") + "\n";
         out += lang::print_instance(*im.problem->goal, "Goal") + "\n";
+        auto negative = negative_goals(im);
+        if (!negative.empty()) {
+            // Said, not dropped: an instance cannot ask that a fact be absent.
+            out += fmt::format("# The goal also asks for {}: a negative goal, which Goal cannot "
+                               "say;\n# the PDDL files keep it (`@import`, `plan`, `validate`, "
+                               "`transfer`).\n\n",
+                               fmt::join(negative, " and "));
+        }
     }
     for (const auto& a : im.actions) {
         out += fmt::format("# action {}: {} rule{}{}\n", a.action, a.variants.size(),
@@ -95,6 +114,9 @@ nlohmann::ordered_json import_json(const pddl::Import& im) {
     j["schema"] = schema_value(*im.domain->schema);
     j["initial"] = im.problem ? acset_value(*im.problem->initial) : nlohmann::ordered_json(nullptr);
     j["goal"] = im.problem ? acset_value(*im.problem->goal) : nlohmann::ordered_json(nullptr);
+    if (im.problem != nullptr) {
+        j["negative_goals"] = negative_goals(im);
+    }
     j["actions"] = nlohmann::ordered_json::array();
     for (const auto& a : im.actions) {
         nlohmann::ordered_json rules = nlohmann::ordered_json::array();

@@ -1,0 +1,1 @@
+pddl import tests/pddl/stacker-domain.pddl tests/pddl/stacker-p01.pddl
