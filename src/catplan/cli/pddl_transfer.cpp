@@ -186,6 +186,10 @@ bool load_ipc_plan(Session& s, TransferInputs& in, const std::string& path, std:
         return false;
     }
     auto plan = pddl::parse_ipc_plan(*f, s.sources, s.sink);
+    if (plan) {
+        // As `validate` does: a step no state could take is bad input, not an invalid plan.
+        pddl::check_ipc_plan(*in.pddl->source, *plan, s.sink);
+    }
     if (report(s, err) || !plan) {
         return false;
     }
