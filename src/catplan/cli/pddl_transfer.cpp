@@ -100,31 +100,46 @@ std::vector<std::string> only_in(const pddl::Problem& a, const pddl::Problem& b)
     return out;
 }
 
-/// Whether Δ_F(I) is the user's target initial state, and the differences in words.
-std::string compare_initial(const PddlTransfer& pt, const pddl::Problem& migrated, bool& same) {
+/// Whether Δ_F(I) is the user's target initial state, and the differences, in words and in JSON.
+bool compare_initial(const PddlTransfer& pt, const pddl::Problem& migrated, PddlChecks& out) {
     const auto& user = *pt.target_problem;
     auto theirs = only_in(user, migrated), ours = only_in(migrated, user);
-    same = theirs.empty() && ours.empty();
+    bool same = theirs.empty() && ours.empty();
+    out.json["target_problem"] = {{"name", user.name},
+                                  {"initial_is_migrated", same},
+                                  {"only_in_migrated", ours},
+                                  {"only_in_target_problem", theirs}};
     if (same) {
-        return fmt::format("target problem {}: its initial state is Δ_F(I)\n", user.name);
+        out.text += fmt::format("target problem {}: its initial state is Δ_F(I)\n", user.name);
+        return true;
     }
-    std::string o = fmt::format("target problem {}: its initial state is not Δ_F(I)\n", user.name);
+    out.text += fmt::format("target problem {}: its initial state is not Δ_F(I)\n", user.name);
     if (!ours.empty()) {
-        o += fmt::format("  only in Δ_F(I): {}\n", fmt::join(ours, ", "));
+        out.text += fmt::format("  only in Δ_F(I): {}\n", fmt::join(ours, ", "));
     }
     if (!theirs.empty()) {
-        o += fmt::format("  only in {}: {}\n", user.name, fmt::join(theirs, ", "));
+        out.text += fmt::format("  only in {}: {}\n", user.name, fmt::join(theirs, ", "));
     }
-    return o;
+    return false;
+}
+
+/// A plan's cost for --format json: the total and whether every action costs 1, or why it is
+/// undefined.
+nlohmann::ordered_json cost_json(const pddl::PlanCost& cost) {
+    if (!cost.undefined.empty()) {
+        return {{"total", nullptr}, {"undefined", cost.undefined}};
+    }
+    return {{"total", cost.total}, {"unit_cost", cost.unit}};
 }
 
 /// "source plan cost: 12 (general cost)" when the source domain's actions have costs.
-std::string source_cost_text(const PddlTransfer& pt) {
+void source_cost(const PddlTransfer& pt, PddlChecks& out) {
     if (!pt.source->pddl_domain.has_costs()) {
-        return "";
+        return;
     }
     auto cost = pddl::plan_cost(pt.source->pddl_domain, *pt.source->pddl_problem, pt.plan);
-    return "source plan cost: " + pddl::describe_cost(cost) + "\n";
+    out.text += "source plan cost: " + pddl::describe_cost(cost) + "\n";
+    out.json["source_cost"] = cost_json(cost);
 }
 
 } // namespace
@@ -245,59 +260,60 @@ std::string pddl_steps_text(const TransferInputs& in, const transfer::TransferRe
 
 int finish_pddl_transfer(const TransferInputs& in, const TransferArgs& a,
                          const transfer::TransferResult& t, std::string& plan_text,
-                         std::string& text, std::vector<OutputText>& outputs) {
+                         PddlChecks& checks, std::vector<OutputText>& outputs) {
     const auto& pt = *in.pddl;
     plan::Plan target{transfer::target_plan(t.steps)};
     int rc = kOk;
-    text += source_cost_text(pt);
-    if (pt.target != nullptr && t.target_initial && t.target_goal) {
-        auto ipc = pddl::to_ipc_plan(*pt.target, target);
-        CATPLAN_ASSERT(ipc.has_value(), "the target plan uses the target's rules");
-        auto migrated =
-            pddl::problem_of(*pt.target, pt.source->pddl_problem->name, *t.target_initial,
-                             *t.target_goal, t.target_goal_conditions);
-        if (pt.target_problem) {
-            // The target's function values (an action's cost) are the user's problem's.
-            migrated.values = pt.target_problem->values;
-            bool same = false;
-            text += compare_initial(pt, migrated, same);
-            rc = same ? rc : kNo;
-        }
-        auto cost = pddl::plan_cost(pt.target->pddl_domain, migrated, *ipc);
-        plan_text = pddl::write_ipc_plan(*ipc, cost);
-        if (pt.target->pddl_domain.has_costs()) {
-            text += "target plan cost: " + pddl::describe_cost(cost) +
-                    (cost.undefined.empty() || pt.target_problem
-                         ? "\n"
-                         : " (--target-problem gives the target's values)\n");
-        }
-        if (migrated.unwritten_goal_conditions > 0) {
-            text += fmt::format("note: {} condition{} of Δ_F(G) forbid{} several facts together, "
-                                "which a PDDL goal cannot say: the PDDL check below leaves {} "
-                                "out (the verdict above checks {})\n",
-                                migrated.unwritten_goal_conditions,
-                                migrated.unwritten_goal_conditions == 1 ? "" : "s",
-                                migrated.unwritten_goal_conditions == 1 ? "s" : "",
-                                migrated.unwritten_goal_conditions == 1 ? "it" : "them",
-                                migrated.unwritten_goal_conditions == 1 ? "it" : "them");
-        }
-        SourceManager scratch;
-        DiagnosticSink scratch_sink(scratch);
-        auto check = pddl::import_problem(*pt.target, migrated, scratch_sink);
-        CATPLAN_ASSERT(check.has_value(), "a migrated problem imports");
-        auto v = pddl::validate_ipc_plan(*check, *ipc);
-        text += fmt::format("target plan checked by catplan's PDDL validator on {} and Δ_F(I), "
-                            "Δ_F(G): {}\n",
-                            pt.target->pddl_domain.name,
-                            v.valid ? std::string("valid") : "invalid: " + v.reason);
-        if (t.verdict.valid() && !v.valid) {
-            rc = kNo;
-        }
-        if (!a.problem_output.empty()) {
-            outputs.push_back({pddl::write_problem(migrated), a.problem_output});
-        }
-    } else {
+    source_cost(pt, checks);
+    if (pt.target == nullptr || !t.target_initial || !t.target_goal) {
         plan_text = target.to_string();
+        return rc;
+    }
+    auto ipc = pddl::to_ipc_plan(*pt.target, target);
+    CATPLAN_ASSERT(ipc.has_value(), "the target plan uses the target's rules");
+    auto migrated = pddl::problem_of(*pt.target, pt.source->pddl_problem->name, *t.target_initial,
+                                     *t.target_goal, t.target_goal_conditions);
+    if (pt.target_problem) {
+        // The target's function values (an action's cost) are the user's problem's.
+        migrated.values = pt.target_problem->values;
+        rc = compare_initial(pt, migrated, checks) ? rc : kNo;
+    }
+    auto cost = pddl::plan_cost(pt.target->pddl_domain, migrated, *ipc);
+    plan_text = pddl::write_ipc_plan(*ipc, cost);
+    if (pt.target->pddl_domain.has_costs()) {
+        checks.text += "target plan cost: " + pddl::describe_cost(cost) +
+                       (cost.undefined.empty() || pt.target_problem
+                            ? "\n"
+                            : " (--target-problem gives the target's values)\n");
+        checks.json["target_cost"] = cost_json(cost);
+    }
+    std::size_t unwritten = migrated.unwritten_goal_conditions;
+    if (unwritten > 0) {
+        checks.text += fmt::format("note: {} condition{} of Δ_F(G) forbid{} several facts "
+                                   "together, which a PDDL goal cannot say: the PDDL check below "
+                                   "leaves {} out (the verdict above checks {})\n",
+                                   unwritten, unwritten == 1 ? "" : "s", unwritten == 1 ? "s" : "",
+                                   unwritten == 1 ? "it" : "them", unwritten == 1 ? "it" : "them");
+    }
+    SourceManager scratch;
+    DiagnosticSink scratch_sink(scratch);
+    auto check = pddl::import_problem(*pt.target, migrated, scratch_sink);
+    CATPLAN_ASSERT(check.has_value(), "a migrated problem imports");
+    auto v = pddl::validate_ipc_plan(*check, *ipc);
+    checks.text += fmt::format("target plan checked by catplan's PDDL validator on {} and "
+                               "Δ_F(I), Δ_F(G): {}\n",
+                               pt.target->pddl_domain.name,
+                               v.valid ? std::string("valid") : "invalid: " + v.reason);
+    checks.json["pddl_check"] = {
+        {"domain", pt.target->pddl_domain.name},
+        {"valid", v.valid},
+        {"reason", v.valid ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(v.reason)},
+        {"goal_conditions_left_out", unwritten}};
+    if (t.verdict.valid() && !v.valid) {
+        rc = kNo;
+    }
+    if (!a.problem_output.empty()) {
+        outputs.push_back({pddl::write_problem(migrated), a.problem_output});
     }
     return rc;
 }

@@ -14,6 +14,7 @@
 
 #include <iosfwd>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 #include <vector>
@@ -51,12 +52,20 @@ bool load_ipc_plan(Session& s, TransferInputs& in, const std::string& path, std:
 /// corresponds or was repaired.
 std::string pddl_steps_text(const TransferInputs& in, const transfer::TransferResult& t);
 
+/// What finish_pddl_transfer found: the plans' costs, the comparison with --target-problem and
+/// the PDDL validator's verdict, in words (`text`, lines) and for --format json (`json`, the
+/// object under "pddl").
+struct PddlChecks {
+    std::string text;
+    nlohmann::ordered_json json = nlohmann::ordered_json::object();
+};
+
 /// After a transfer with PDDL inputs: the target plan in IPC form put in `plan_text`, checked by
-/// catplan's PDDL validator, and --target-problem compared (what it found appended to `text`),
+/// catplan's PDDL validator, and --target-problem compared (what it found added to `checks`),
 /// and --problem-output's file added to `outputs`, for the caller to write all or none of;
 /// returns kOk, or kNo when the check or the comparison fails.
 int finish_pddl_transfer(const TransferInputs& in, const TransferArgs& a,
                          const transfer::TransferResult& t, std::string& plan_text,
-                         std::string& text, std::vector<OutputText>& outputs);
+                         PddlChecks& checks, std::vector<OutputText>& outputs);
 
 } // namespace catplan::cli

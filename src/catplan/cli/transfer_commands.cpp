@@ -338,6 +338,15 @@ Outcome run_transfer(const TransferCommandArgs& a, const TransferInputs& in, std
     return r;
 }
 
+// With PDDL inputs, the JSON report also has the target IPC plan and what the PDDL side checked.
+void add_pddl_json(nlohmann::ordered_json& j, bool pddl, const std::string& plan_text,
+                   const PddlChecks& checks) {
+    if (pddl) {
+        j["target_ipc_plan"] = plan_text;
+        j["pddl"] = checks.json;
+    }
+}
+
 // The exit code of one transferred plan: 0 valid (and, with PDDL inputs, checked), else 1.
 int transfer_exit_code(const Outcome& r, int checked) {
     return r.t.verdict.valid() && checked == kOk ? kOk : kNo;
@@ -350,15 +359,23 @@ int cmd_transfer(const TransferCommandArgs& a, std::ostream& out, std::ostream& 
         return input_error(s);
     }
     Outcome r = run_transfer(a, *in, err);
-    std::string text =
-        a.format == "json" ? json::dump(json_report(a, *in, r), 2) + "\n" : text_report(a, *in, r);
     int checked = kOk;
     std::vector<OutputText> outputs;
+    PddlChecks checks;
+    std::string plan_text;
+    if (in->pddl) {
+        checked = finish_pddl_transfer(*in, a.in, r.t, plan_text, checks, outputs);
+    }
+    std::string text;
+    if (a.format == "json") {
+        nlohmann::ordered_json j = json_report(a, *in, r);
+        add_pddl_json(j, in->pddl != nullptr, plan_text, checks);
+        text = json::dump(j, 2) + "\n";
+    } else {
+        text = text_report(a, *in, r) + checks.text;
+    }
     if (in->pddl) {
         // With PDDL inputs, -o is the target IPC plan and the report goes to stdout.
-        std::string checks, plan_text;
-        checked = finish_pddl_transfer(*in, a.in, r.t, plan_text, checks, outputs);
-        text += a.format == "json" ? "" : checks;
         outputs.insert(outputs.begin(), OutputText{text, ""});
         if (!a.output.empty()) {
             outputs.push_back({plan_text, a.output});
@@ -448,7 +465,7 @@ PlanResult transfer_one(const TransferCommandArgs& a, Session& s, TransferInputs
     }
     Outcome r = run_transfer(a, in, diag);
     int checked = kOk;
-    std::string checks;
+    PddlChecks checks;
     if (in.pddl) {
         std::vector<OutputText> none; // a batch takes no --problem-output
         checked = finish_pddl_transfer(in, a.in, r.t, p.target_plan, checks, none);
@@ -457,7 +474,7 @@ PlanResult transfer_one(const TransferCommandArgs& a, Session& s, TransferInputs
     p.diagnostics = diag.str();
     if (a.format == "text") {
         p.line = summary_line(path, in, r);
-        for (std::string_view rest = checks; !rest.empty();) {
+        for (std::string_view rest = checks.text; !rest.empty();) {
             auto end = rest.find('\n');
             p.line += fmt::format("  {}\n", rest.substr(0, end));
             rest.remove_prefix(end == std::string_view::npos ? rest.size() : end + 1);
@@ -466,9 +483,7 @@ PlanResult transfer_one(const TransferCommandArgs& a, Session& s, TransferInputs
         nlohmann::ordered_json j = json_report(a, in, r);
         j["plan_file"] = path;
         j["exit_code"] = p.rc;
-        if (in.pddl) {
-            j["target_ipc_plan"] = p.target_plan;
-        }
+        add_pddl_json(j, in.pddl != nullptr, p.target_plan, checks);
         p.json = json::dump(j);
     }
     return p;
