@@ -324,9 +324,9 @@ TEST(PddlUnsupported, EveryRequirementAndConstructIsNamedAndLocated) {
     EXPECT_FALSE(l->domain);
     std::string e = l->errors();
     for (const char* expected :
-         {"4:26: error: unsupported requirement ':conditional-effects'",
-          "4:47: error: unsupported requirement ':derived-predicates'",
-          "5:18: error: unsupported requirement ':durative-actions'",
+         {"4:26: warning: requirement ':conditional-effects' is read only as far as catplan goes",
+          "4:47: warning: requirement ':derived-predicates'",
+          "5:18: warning: requirement ':durative-actions'",
           "10:4: error: unsupported domain section ':derived' (:derived-predicates)",
           "13:36: error: unsupported construct 'or'", "13:67: error: unsupported construct '>='",
           "14:47: error: unsupported construct 'decrease'",
@@ -335,6 +335,22 @@ TEST(PddlUnsupported, EveryRequirementAndConstructIsNamedAndLocated) {
         EXPECT_TRUE(has(e, expected)) << expected << "\n" << e;
     }
     EXPECT_TRUE(l->sink.only_unsupported()) << e;
+}
+
+TEST(PddlUnsupported, ARequirementWhoseConstructsAreNotUsedIsNamedAndRead) {
+    // :adl allows much catplan does not read; this domain uses only what it does.
+    auto l = load_text("(define (domain d) (:requirements :adl :typing) (:types room)\n"
+                       "(:predicates (lit ?r - room) (near ?a ?b - room))\n"
+                       "(:action light :parameters (?a ?b - room)\n"
+                       "  :precondition (and (near ?a ?b) (not (lit ?b)) (not (= ?a ?b)))\n"
+                       "  :effect (lit ?b)))",
+                       "(define (problem p) (:domain d) (:objects k h - room)\n"
+                       "(:init (near k h)) (:goal (lit h)))");
+    ASSERT_TRUE(l->import) << l->errors();
+    EXPECT_FALSE(l->sink.has_errors()) << l->errors();
+    EXPECT_TRUE(has(l->errors(), "1:35: warning: requirement ':adl'")) << l->errors();
+    EXPECT_TRUE(validate_ipc_plan(*l->import, plan_text("(light k h)")).valid);
+    EXPECT_FALSE(validate_ipc_plan(*l->import, plan_text("(light h k)")).valid);
 }
 
 TEST(PddlUnsupported, MalformedInputIsNotUnsupported) {
@@ -346,9 +362,9 @@ TEST(PddlUnsupported, MalformedInputIsNotUnsupported) {
     EXPECT_FALSE(section->sink.only_unsupported());
     // A construct catplan does not read beside a malformed one: bad input (exit 2).
     auto both = load_text("(define (domain d) (:requirements :adl) (:predicates (p))\n"
-                          "(:action a :parameters () :precondition (q) :effect (p)))",
+                          "(:action a :parameters () :precondition (or (p) (p)) :effect (q)))",
                           "");
-    EXPECT_TRUE(has(both->errors(), "unsupported requirement ':adl'")) << both->errors();
+    EXPECT_TRUE(has(both->errors(), "unsupported construct 'or'")) << both->errors();
     EXPECT_TRUE(has(both->errors(), "unknown predicate 'q'")) << both->errors();
     EXPECT_FALSE(both->sink.only_unsupported());
 }

@@ -25,7 +25,9 @@ using detail::TypeScope;
 const std::unordered_set<std::string> kSupported = {":strips", ":typing", ":negative-preconditions",
                                                     ":equality", ":action-costs"};
 
-// PDDL's other requirements (PDDL 3.1): valid, and refused by name.
+// PDDL's other requirements (PDDL 3.1): valid, and named in a warning. A requirement only allows
+// constructs; each construct catplan does not read is refused where it is used, so a domain that
+// declares :adl and uses only what catplan reads (as many do) is read, as other planners read it.
 const std::unordered_set<std::string> kUnsupported = {":disjunctive-preconditions",
                                                       ":existential-preconditions",
                                                       ":universal-preconditions",
@@ -53,11 +55,11 @@ void read_requirements(Parser& p, const SExpr& e, Domain& d) {
             continue;
         }
         if (kUnsupported.count(r.atom) != 0) {
-            p.unsupported(r.range,
-                          fmt::format("unsupported requirement '{}' (catplan reads :strips, "
-                                      ":typing, :negative-preconditions, :equality and "
-                                      ":action-costs)",
-                                      r.atom));
+            p.warning(r.range, fmt::format("requirement '{}' is read only as far as catplan "
+                                           "goes (:strips, :typing, :negative-preconditions, "
+                                           ":equality, :action-costs); any other construct it "
+                                           "allows is refused where it is used",
+                                           r.atom));
             continue;
         }
         if (kSupported.count(r.atom) == 0) {
@@ -448,6 +450,10 @@ std::optional<Problem> parse_problem(std::uint32_t file, const Domain& domain,
     FormulaReader fr(p, scope);
     for (std::size_t i = 2; i < top->items.size(); ++i) {
         read_problem_section(p, fr, domain, top->items[i], pr);
+        if (!pr.domain_name.empty() && pr.domain_name != domain.name) {
+            // Read against another domain, every later name would be an error of its own.
+            return std::nullopt;
+        }
     }
     if (p.failed()) {
         return std::nullopt;

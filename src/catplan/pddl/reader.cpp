@@ -156,6 +156,10 @@ Diagnostic& Parser::unsupported(SourceRange r, std::string message) {
     return sink_.unsupported(r, std::move(message));
 }
 
+Diagnostic& Parser::warning(SourceRange r, std::string message) {
+    return sink_.warning(r, std::move(message));
+}
+
 std::optional<std::string> Parser::union_type(const SExpr& t, const TypeScope& scope) {
     if (scope.known == nullptr) {
         unsupported(t.range, "unsupported construct 'either' in (:types ...) (a type below a "

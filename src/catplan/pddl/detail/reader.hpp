@@ -55,6 +55,9 @@ public:
     /// Valid PDDL that catplan does not support (exit 3).
     Diagnostic& unsupported(SourceRange r, std::string message);
 
+    /// Something the user should know that does not stop the reading.
+    Diagnostic& warning(SourceRange r, std::string message);
+
     /// `a b - t c` (names or variables) into typed names; the type of each is checked against
     /// the scope (a union `(either a b)` becomes its type, see pddl.hpp).
     std::vector<TypedName> typed_list(const std::vector<SExpr>& items, std::size_t from,
