@@ -364,6 +364,22 @@ const Action* Domain::find_action(std::string_view action_name) const {
 }
 
 bool Domain::is_subtype(std::string_view sub, std::string_view super) const {
+    // Most types have one parent: their chain is walked without allocating (this runs for every
+    // argument of every step a plan names).
+    std::string_view up = sub;
+    for (std::size_t depth = 0; depth <= types.size(); ++depth) {
+        if (up == super) {
+            return true;
+        }
+        const Type* info = find_type(up);
+        if (info == nullptr || info->parents.empty()) {
+            return false;
+        }
+        if (info->parents.size() > 1) {
+            break;
+        }
+        up = info->parents[0];
+    }
     // Depth first along the parents, each type once (the graph is acyclic, but may have many
     // paths between two types).
     std::vector<std::string_view> stack{sub};
