@@ -14,6 +14,7 @@ namespace {
 /// An imported PDDL domain (and problem).
 struct PyPddl {
     std::shared_ptr<const pddl::Import> im;
+    std::vector<PyDiagnostic> warnings; ///< e.g. a requirement read only as far as catplan goes
 };
 
 /// Parses and imports; file ids are those of domain and problem text registered in sources.
@@ -36,7 +37,8 @@ PyPddl import(SourceManager& sources, DiagnosticSink& sink, std::uint32_t domain
     if (!im || sink.has_errors()) {
         throw error_from(sources, sink);
     }
-    return PyPddl{std::make_shared<const pddl::Import>(std::move(*im))};
+    return PyPddl{std::make_shared<const pddl::Import>(std::move(*im)),
+                  diagnostics_of(sources, sink)};
 }
 
 std::uint32_t read_file(SourceManager& sources, DiagnosticSink& sink, const std::string& path) {
@@ -156,6 +158,9 @@ and written back.)doc")
                                })
         .def_property_readonly("schema",
                                [](const PyPddl& t) { return PySchema{t.im->domain->schema}; })
+        .def_readonly("warnings", &PyPddl::warnings,
+                      "Warnings met while reading the PDDL (Diagnostic): a requirement catplan "
+                      "reads only as far as the domain uses what it supports.")
         .def_property_readonly(
             "actions",
             [](const PyPddl& t) {

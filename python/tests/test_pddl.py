@@ -56,3 +56,12 @@ def test_a_delta_domain_exports_as_pddl(source_dir):
     m = catplan.load(str(source_dir / "tests/pddl/lights.cp"))
     text = catplan.export_pddl(m["LightsProblem"].domain)
     assert "(define (domain LightsDomain)" in text and ":action" in text
+
+
+def test_a_requirement_read_only_in_part_is_a_warning(source_dir):
+    rooms = catplan.load_pddl(str(source_dir / "tests/pddl/adl-rooms-domain.pddl"),
+                              str(source_dir / "tests/pddl/adl-rooms-p01.pddl"))
+    [w] = rooms.warnings
+    assert w.severity == "warning" and "':adl'" in w.message and w.line == 4
+    assert rooms.validate("(light hall kitchen)\n(light kitchen study)\n").valid
+    assert catplan.load_pddl(str(source_dir / "tests/pddl/blocksworld-domain.pddl")).warnings == []
