@@ -339,12 +339,10 @@ Outcome run_transfer(const TransferCommandArgs& a, const TransferInputs& in, std
 }
 
 // With PDDL inputs, the JSON report also has the target IPC plan and what the PDDL side checked.
-void add_pddl_json(nlohmann::ordered_json& j, bool pddl, const std::string& plan_text,
+void add_pddl_json(nlohmann::ordered_json& j, const std::string& plan_text,
                    const PddlChecks& checks) {
-    if (pddl) {
-        j["target_ipc_plan"] = plan_text;
-        j["pddl"] = checks.json;
-    }
+    j["target_ipc_plan"] = plan_text;
+    j["pddl"] = checks.json;
 }
 
 // The exit code of one transferred plan: 0 valid (and, with PDDL inputs, checked), else 1.
@@ -369,7 +367,9 @@ int cmd_transfer(const TransferCommandArgs& a, std::ostream& out, std::ostream& 
     std::string text;
     if (a.format == "json") {
         nlohmann::ordered_json j = json_report(a, *in, r);
-        add_pddl_json(j, in->pddl != nullptr, plan_text, checks);
+        if (in->pddl) {
+            add_pddl_json(j, plan_text, checks);
+        }
         text = json::dump(j, 2) + "\n";
     } else {
         text = text_report(a, *in, r) + checks.text;
@@ -483,7 +483,9 @@ PlanResult transfer_one(const TransferCommandArgs& a, Session& s, TransferInputs
         nlohmann::ordered_json j = json_report(a, in, r);
         j["plan_file"] = path;
         j["exit_code"] = p.rc;
-        add_pddl_json(j, in.pddl != nullptr, p.target_plan, checks);
+        if (in.pddl) {
+            add_pddl_json(j, p.target_plan, checks);
+        }
         p.json = json::dump(j);
     }
     return p;

@@ -273,7 +273,9 @@ void read_metric(Parser& p, const Domain& domain, const SExpr& e, Problem& pr) {
     pr.metric = true;
 }
 
-void read_problem_section(Parser& p, FormulaReader& fr, const Domain& domain, const SExpr& e,
+// One section of a problem into pr; false when the problem names another domain (read against
+// this one, every later name would be an error of its own).
+bool read_problem_section(Parser& p, FormulaReader& fr, const Domain& domain, const SExpr& e,
                           Problem& pr) {
     std::string_view h = e.head();
     if (h == ":domain" && e.items.size() == 2 && is_name(e.items[1])) {
@@ -281,6 +283,7 @@ void read_problem_section(Parser& p, FormulaReader& fr, const Domain& domain, co
         if (pr.domain_name != domain.name) {
             p.error(e.items[1].range, fmt::format("the problem is for domain '{}', not '{}'",
                                                   pr.domain_name, domain.name));
+            return false;
         }
     } else if (h == ":requirements") {
         Domain scratch;
@@ -305,6 +308,7 @@ void read_problem_section(Parser& p, FormulaReader& fr, const Domain& domain, co
         p.error(e.range, h.empty() ? std::string("expected a problem section '(:keyword ...)'")
                                    : fmt::format("unknown problem section '{}'", h));
     }
+    return true;
 }
 
 } // namespace
@@ -465,9 +469,7 @@ std::optional<Problem> parse_problem(std::uint32_t file, const Domain& domain,
     Scope scope{domain, nullptr, &pr};
     FormulaReader fr(p, scope);
     for (std::size_t i = 2; i < top->items.size(); ++i) {
-        read_problem_section(p, fr, domain, top->items[i], pr);
-        if (!pr.domain_name.empty() && pr.domain_name != domain.name) {
-            // Read against another domain, every later name would be an error of its own.
+        if (!read_problem_section(p, fr, domain, top->items[i], pr)) {
             return std::nullopt;
         }
     }
