@@ -49,12 +49,53 @@ std::size_t cgroup_limit_bytes() {
     return 0;
 }
 
+// /proc/self/statm, opened once per thread and read again from its start each time: a search
+// samples it every millisecond and a transfer starts many small searches, and an open of a /proc
+// path costs ten times the read. A process forked since the open has its own file to open.
+class Statm {
+public:
+    Statm(const Statm&) = delete;
+    Statm& operator=(const Statm&) = delete;
+
+    ~Statm() { close(); }
+
+    static std::string_view read(std::span<char> buf) {
+        thread_local Statm self;
+        return self.read_into(buf);
+    }
+
+private:
+    Statm() = default;
+
+    std::string_view read_into(std::span<char> buf) {
+        pid_t pid = ::getpid();
+        if (fd_ < 0 || pid != pid_) {
+            close();
+            fd_ = ::open("/proc/self/statm", O_RDONLY | O_CLOEXEC);
+            pid_ = pid;
+        }
+        ssize_t n = fd_ < 0 ? -1 : ::pread(fd_, buf.data(), buf.size(), 0);
+        return n > 0 ? std::string_view(buf.data(), static_cast<std::size_t>(n))
+                     : std::string_view();
+    }
+
+    void close() {
+        if (fd_ >= 0) {
+            ::close(fd_);
+            fd_ = -1;
+        }
+    }
+
+    int fd_ = -1;
+    pid_t pid_ = 0;
+};
+
 } // namespace
 
 std::size_t resident_bytes() {
     // statm holds "size resident shared text lib data dt" in pages.
     std::array<char, 128> buf{};
-    std::string_view text = read_small_file("/proc/self/statm", buf);
+    std::string_view text = Statm::read(buf);
     std::size_t space = text.find(' ');
     if (space == std::string_view::npos) {
         return 0;
