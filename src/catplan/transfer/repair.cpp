@@ -33,20 +33,12 @@ bool embeds(const ACSet& goal, const ACSet& x) {
     return hom::is_homomorphic(goal, x, opt);
 }
 
-// What replaying steps on y gives: the state reached.
-struct Replayed {
-    NamedState state;
-    bool named = false; // the subgoal embeds in the state by names
-};
-
-// The steps replayed as DPO steps on a copy of y, each match bound by names (through the index
+// The steps replayed as DPO steps on z (a copy of y), each match bound by names (through the index
 // of names), created parts named by `name`, and the subgoal checked to embed in the result, by
-// names, or (unless `by_names`) by any monic morphism; or why the steps do not reach the subgoal.
-Result<Replayed> replay(const plan::Domain& target, const NamedState& y,
-                        const std::vector<plan::Step>& steps, const ACSet& subgoal, bool by_names,
-                        const CreatedName& name) {
-    Replayed out{y};
-    NamedState& z = out.state;
+// names, or (unless `by_names`) by any monic morphism: whether it embeds by names; or why the steps
+// do not reach the subgoal.
+Result<bool> replay(const plan::Domain& target, NamedState& z, const std::vector<plan::Step>& steps,
+                    const ACSet& subgoal, bool by_names, const CreatedName& name) {
     for (const auto& step : steps) {
         const auto* rule = target.find_rule(step.action);
         if (rule == nullptr) {
@@ -61,19 +53,19 @@ Result<Replayed> replay(const plan::Domain& target, const NamedState& y,
             return fail(applied.error());
         }
     }
-    out.named = embeds_by_names(z, subgoal);
-    if (!out.named && (by_names || !embeds(subgoal, z.state()))) {
+    bool named = embeds_by_names(z, subgoal);
+    if (!named && (by_names || !embeds(subgoal, z.state()))) {
         return fail("the subgoal does not embed in the state the steps reach");
     }
-    return out;
+    return named;
 }
 
-// The repair found: its steps, and their replay.
-void take(Repair& out, std::vector<plan::Step> steps, Replayed replayed) {
+// The repair found: its steps, and the state their replay reached.
+void take(Repair& out, std::vector<plan::Step> steps, NamedState&& reached, bool by_names) {
     out.found = true;
     out.steps = std::move(steps);
-    out.reached.emplace(std::move(replayed.state));
-    out.by_names = replayed.named;
+    out.reached.emplace(std::move(reached));
+    out.by_names = by_names;
 }
 
 // Whether every argument of the steps names a part of `initial`: a step of a focused plan that
@@ -99,6 +91,19 @@ bool binds_initial_parts(const plan::Domain& target, const ACSet& initial,
 
 Repairer::Repairer(plan::DomainPtr target, RepairOptions options)
     : target_(std::move(target)), options_(std::move(options)) {}
+
+NamedState& Repairer::scratch_copy(const NamedState& y) {
+    if (scratch_) {
+        *scratch_ = y; // into the containers of a state the transfer is done with
+    } else {
+        scratch_.emplace(y);
+    }
+    return *scratch_;
+}
+
+void Repairer::recycle(NamedState&& old) {
+    scratch_.emplace(std::move(old));
+}
 
 Repair Repairer::repair(const NamedState& y, const ACSet& subgoal, std::size_t step,
                         const CreatedName& name) {
@@ -146,18 +151,18 @@ plan::SearchResult Repairer::search_by_names(const plan::ProblemPtr& p,
 // `searched_before` says whether the shape was searched at all (a failed search need not be run
 // again).
 bool Repairer::use_memo(const Request& q, const RepairMemo& memo, const RepairShape& shape,
-                        Repair& out, bool& searched_before) const {
+                        Repair& out, bool& searched_before) {
     const auto* e = memo.find(shape);
     searched_before = e != nullptr;
     if (e == nullptr || !e->solved) {
         return false;
     }
     auto steps = RepairMemo::renamed(*e, shape);
-    auto replayed = replay(*target_, q.y, steps, q.subgoal, true, q.name);
+    auto replayed = replay(*target_, scratch_copy(q.y), steps, q.subgoal, true, q.name);
     if (!replayed) {
         return false; // something outside the focus differs
     }
-    take(out, std::move(steps), std::move(*replayed));
+    take(out, std::move(steps), std::move(*scratch_), *replayed);
     out.reused_from = e->origin;
     return true;
 }
@@ -220,11 +225,11 @@ bool Repairer::focus_repair(const Request& q, const Focus& focus, Repair& out) {
         if (change) {
             changes_.remember(*change, r.plan->steps, q.step);
         }
-        auto replayed = replay(*target_, q.y, r.plan->steps, q.subgoal, true, q.name);
+        auto replayed = replay(*target_, scratch_copy(q.y), r.plan->steps, q.subgoal, true, q.name);
         if (!replayed) {
             continue;
         }
-        take(out, std::move(r.plan->steps), std::move(*replayed));
+        take(out, std::move(r.plan->steps), std::move(*scratch_), *replayed);
         out.focus_parts = fp.parts;
         return true;
     }
@@ -275,9 +280,9 @@ void Repairer::whole_repair(const Request& q, Repair& out) {
                                     plan::to_string(r.status), out.stats.expanded);
         return;
     }
-    auto replayed = replay(*target_, q.y, r.plan->steps, q.subgoal, false, q.name);
+    auto replayed = replay(*target_, scratch_copy(q.y), r.plan->steps, q.subgoal, false, q.name);
     CATPLAN_ASSERT(replayed, "a plan the planner validated replays on its initial state");
-    take(out, std::move(r.plan->steps), std::move(*replayed));
+    take(out, std::move(r.plan->steps), std::move(*scratch_), *replayed);
 }
 
 } // namespace catplan::transfer

@@ -94,6 +94,10 @@ public:
     Repair repair(const NamedState& y, const acset::ACSet& subgoal, std::size_t step,
                   const CreatedName& name);
 
+    /// Hands back a state the caller is done with (the y a repair's reached state replaced), whose
+    /// memory the next replay reuses.
+    void recycle(NamedState&& old);
+
 private:
     // One repair asked for: from y to a state that holds subgoal, for source step `step`.
     struct Request {
@@ -105,7 +109,10 @@ private:
 
     bool focus_repair(const Request& q, const Focus& focus, Repair& out);
     bool use_memo(const Request& q, const RepairMemo& memo, const RepairShape& shape, Repair& out,
-                  bool& searched_before) const;
+                  bool& searched_before);
+    // The scratch state, assigned a copy of y: a replay's work space, kept from one repair to
+    // the next (a copy assigned into a state's containers reuses their memory).
+    NamedState& scratch_copy(const NamedState& y);
     void whole_repair(const Request& q, Repair& out);
     plan::SearchResult search_by_names(const plan::ProblemPtr& p,
                                        const plan::SearchOptions& options) const;
@@ -117,6 +124,7 @@ private:
     std::string why_no_task_; ///< why it could not be compiled (then each repair compiles its own)
     RepairMemo memo_;         ///< the plans of the focuses searched, by shape
     RepairMemo changes_;      ///< the same plans, by the shape of what they change
+    std::optional<NamedState> scratch_; ///< see scratch_copy
 };
 
 } // namespace catplan::transfer

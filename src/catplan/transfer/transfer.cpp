@@ -441,7 +441,9 @@ private:
                                           repair.why));
         }
         if (repair.reached) {
-            *y_ = std::move(*repair.reached); // the steps replayed from Y_{i-1}, checked there
+            // The steps replayed from Y_{i-1}, checked there; Y_{i-1}'s memory serves the next.
+            std::swap(*y_, *repair.reached);
+            repairer_->recycle(std::move(*repair.reached));
         }
         if (comparing()) {
             // The repair reaches a state that holds Δ_F(X_i); whether it is Δ_F(X_i) is checked.
