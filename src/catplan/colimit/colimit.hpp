@@ -79,6 +79,9 @@ struct ComplementOptions {
     OpenCells open;
     /// Single-pushout deletion: parts referring to a deleted part are deleted too, transitively.
     bool cascade = false;
+    /// Per object, the parts of L outside l(K) (parts_outside_image(l, L)), when the caller keeps
+    /// them with the rule; empty: computed at each deletion.
+    std::vector<std::vector<Part>> outside_l;
 };
 
 enum class GluingViolationKind { Identification, Dangling, NotMonic, Cascade };

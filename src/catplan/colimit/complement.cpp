@@ -53,7 +53,11 @@ struct Span {
 // share its image with another part of L. Records the images of the deleted parts in out.parts.
 void check_left(const Span& in, Deletion& out) {
     const auto& s = in.x.schema();
-    auto outside = parts_outside_image(in.l, in.l_state);
+    std::vector<std::vector<Part>> computed;
+    if (in.options.outside_l.empty()) {
+        computed = parts_outside_image(in.l, in.l_state);
+    }
+    const auto& outside = in.options.outside_l.empty() ? computed : in.options.outside_l;
     // Per part of L, reused from object to object: kept once (kSeen), not kept at all (kDeleted).
     constexpr char kSeen = 1, kDeleted = 2;
     std::vector<char> flags;

@@ -22,6 +22,7 @@ Shape::Shape(const Rule& r) : rule(r) {
         for (Part p : r.deleted_parts(ob)) {
             deletes[o][p] = 1;
         }
+        gluing.outside_l.push_back(r.deleted_parts(ob));
         k_of_r.emplace_back(r.R.num_parts(ob), kNoPart);
         for (Part k = 0; k < r.K.num_parts(ob); ++k) {
             Part rp = r.r(ob, k);
