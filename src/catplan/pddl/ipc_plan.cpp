@@ -10,6 +10,8 @@
 #include <cmath>
 #include <cstdlib>
 #include <fmt/format.h>
+#include <functional>
+#include <unordered_set>
 
 namespace catplan::pddl {
 
@@ -231,17 +233,16 @@ struct StepProblem {
 
 /// What is wrong with a step whatever the state: an unknown action (then nothing else), a wrong
 /// number of arguments (then nothing else), each unknown object and each argument of a wrong type.
-std::vector<StepProblem> static_problems(const Import& im, const IpcStep& s) {
+std::vector<StepProblem> static_problems(const Domain& d, const Problem& p, const IpcStep& s) {
     auto at = [&](SourceRange r) { return r.valid() ? r : s.range; };
-    const Action* a = im.pddl_domain.find_action(s.action);
-    if (a == nullptr || im.find_action(s.action) == nullptr) {
+    const Action* a = d.find_action(s.action);
+    if (a == nullptr) {
         std::vector<std::string> names;
-        for (const auto& action : im.pddl_domain.actions) {
+        for (const auto& action : d.actions) {
             names.push_back(action.name);
         }
-        return {
-            {at(s.action_range), fmt::format("unknown action '{}' (domain {} has: {})", s.action,
-                                             im.pddl_domain.name, fmt::join(names, ", "))}};
+        return {{at(s.action_range), fmt::format("unknown action '{}' (domain {} has: {})",
+                                                 s.action, d.name, fmt::join(names, ", "))}};
     }
     if (s.args.size() != a->params.size()) {
         return {{s.range, fmt::format("'{}' takes {} argument{}, got {}", a->name, a->params.size(),
@@ -250,10 +251,10 @@ std::vector<StepProblem> static_problems(const Import& im, const IpcStep& s) {
     std::vector<StepProblem> out;
     for (std::size_t i = 0; i < s.args.size(); ++i) {
         SourceRange arg = at(i < s.arg_ranges.size() ? s.arg_ranges[i] : SourceRange{});
-        const TypedName* o = find_object(im.pddl_domain, *im.pddl_problem, s.args[i]);
+        const TypedName* o = find_object(d, p, s.args[i]);
         if (o == nullptr) {
             out.push_back({arg, fmt::format("unknown object '{}'", s.args[i])});
-        } else if (!im.pddl_domain.is_subtype(o->type, a->params[i].type)) {
+        } else if (!d.is_subtype(o->type, a->params[i].type)) {
             out.push_back(
                 {arg, fmt::format("argument {} (?{}) must be a {}, and '{}' is a {}", i + 1,
                                   a->params[i].name, a->params[i].type, o->name, o->type)});
@@ -262,18 +263,107 @@ std::vector<StepProblem> static_problems(const Import& im, const IpcStep& s) {
     return out;
 }
 
-/// The first precondition of the step's action that does not hold in x, in words.
-std::optional<std::string> false_precondition(const Import& im, const acset::ACSet& x,
-                                              const Action& a, const IpcStep& s) {
-    for (const auto& l : a.precondition) {
-        Atom g = ground(a, l.atom, s);
-        bool h = g.predicate == "=" ? g.args[0].name == g.args[1].name : holds(im, x, g);
-        if (h != l.positive) {
-            return fmt::format("precondition {} does not hold",
-                               Literal{g, l.positive, {}}.to_string());
+// A state as PDDL reads it: the ground atoms that hold, each kept as its predicate and arguments
+// joined by spaces (names are lowered and have no spaces).
+class Facts {
+public:
+    explicit Facts(const Problem& p) {
+        for (const auto& atom : p.init) {
+            atoms_.insert(key(atom));
         }
     }
-    return std::nullopt;
+
+    // Whether a ground atom holds; an equality holds when both sides name one object.
+    bool holds(const Atom& g) const {
+        return g.predicate == "=" ? g.args[0].name == g.args[1].name : atoms_.count(key(g)) > 0;
+    }
+
+    // The first precondition of the step's action that does not hold, in words.
+    std::optional<std::string> false_precondition(const Action& a, const IpcStep& s) const {
+        for (const auto& l : a.precondition) {
+            Atom g = ground(a, l.atom, s);
+            if (holds(g) != l.positive) {
+                return fmt::format("precondition {} does not hold",
+                                   Literal{g, l.positive, {}}.to_string());
+            }
+        }
+        return std::nullopt;
+    }
+
+    // The step's effect: its deletes removed, then its adds added (an atom both deleted and added
+    // holds after the step).
+    void apply(const Action& a, const IpcStep& s) {
+        for (const auto& atom : a.del) {
+            atoms_.erase(key(ground(a, atom, s)));
+        }
+        for (const auto& atom : a.add) {
+            atoms_.insert(key(ground(a, atom, s)));
+        }
+    }
+
+private:
+    static std::string key(const Atom& g) {
+        std::string k = g.predicate;
+        for (const auto& t : g.args) {
+            k += ' ';
+            k += t.name;
+        }
+        return k;
+    }
+
+    std::unordered_set<std::string> atoms_;
+};
+
+// A step's own rule-level work, beside PDDL's meaning: nullopt, or why the step failed.
+using StepHook = std::function<std::optional<std::string>(std::size_t, const IpcStep&)>;
+
+// The plan replayed with PDDL's meaning (Facts) from p's initial state, each step's static
+// problems, precondition and cost checked before `hook` sees it, then the goal.
+IpcValidation replay_ipc_plan(const Domain& d, const Problem& p, const IpcPlan& plan,
+                              const StepHook& hook) {
+    IpcValidation v;
+    v.cost.unit = unit_cost(d, p);
+    Facts facts(p);
+    for (std::size_t i = 0; i < plan.size() && !v.failed_step; ++i) {
+        const IpcStep& s = plan[i];
+        auto fail_step = [&](const std::string& why) {
+            v.failed_step = i;
+            v.reason = fmt::format("step {} {}: {}", i + 1, s.to_string(), why);
+        };
+        if (auto problems = static_problems(d, p, s); !problems.empty()) {
+            fail_step(problems[0].message);
+            break;
+        }
+        const Action& a = *d.find_action(s.action);
+        if (auto why = facts.false_precondition(a, s)) {
+            fail_step(*why);
+            break;
+        }
+        auto cost = step_cost(d, p, s);
+        if (!cost) {
+            fail_step(cost.error());
+            break;
+        }
+        if (auto why = hook ? hook(i, s) : std::nullopt) {
+            fail_step(*why);
+            break;
+        }
+        facts.apply(a, s);
+        v.cost.steps.push_back(*cost);
+        v.cost.total += *cost;
+    }
+    if (!v.failed_step) {
+        v.goal_reached = true;
+        for (const auto& l : p.goal) {
+            if (facts.holds(l.atom) != l.positive) {
+                v.goal_reached = false;
+                v.reason = fmt::format("goal not reached: {} does not hold", l.to_string());
+                break;
+            }
+        }
+        v.valid = v.goal_reached;
+    }
+    return v;
 }
 
 } // namespace
@@ -310,7 +400,7 @@ bool check_ipc_plan(const Import& import, const IpcPlan& plan, DiagnosticSink& s
     CATPLAN_ASSERT(import.pddl_problem.has_value(), "a plan is checked against a problem");
     bool ok = true;
     for (const auto& step : plan) {
-        for (auto& problem : static_problems(import, step)) {
+        for (auto& problem : static_problems(import.pddl_domain, *import.pddl_problem, step)) {
             sink.error(problem.at, std::move(problem.message));
             ok = false;
         }
@@ -378,68 +468,40 @@ bool holds(const Import& import, const acset::ACSet& x, const Atom& atom) {
     return false;
 }
 
+IpcValidation simulate_ipc_plan(const Domain& domain, const Problem& problem, const IpcPlan& plan) {
+    return replay_ipc_plan(domain, problem, plan, {});
+}
+
 IpcValidation validate_ipc_plan(const Import& im, const IpcPlan& plan) {
     CATPLAN_ASSERT(im.problem != nullptr, "validation needs an imported problem");
-    IpcValidation v;
-    v.cost.unit = unit_cost(im.pddl_domain, *im.pddl_problem);
     acset::ACSet x = *im.problem->initial;
-    for (std::size_t i = 0; i < plan.size() && !v.failed_step; ++i) {
-        const IpcStep& s = plan[i];
-        auto prefix = fmt::format("step {} {}", i + 1, s.to_string());
-        if (auto problems = static_problems(im, s); !problems.empty()) {
-            v.failed_step = i;
-            v.reason = fmt::format("{}: {}", prefix, problems[0].message);
-            break;
-        }
-        const ActionVariants* av = im.find_action(s.action);
-        if (auto why = false_precondition(im, x, *im.pddl_domain.find_action(s.action), s)) {
-            v.failed_step = i;
-            v.reason = fmt::format("{}: {}", prefix, *why);
-            break;
-        }
-        auto cost = step_cost(im.pddl_domain, *im.pddl_problem, s);
-        if (!cost) {
-            v.failed_step = i;
-            v.reason = fmt::format("{}: {}", prefix, cost.error());
-            break;
-        }
-        std::string last = "no rule variant fits the arguments";
-        bool applied = false;
-        for (const auto& var : av->variants) {
-            auto step = variant_step(var, s);
-            if (!step) {
-                continue;
-            }
-            auto m = plan::resolve_step(*var.rule, x, *step);
-            if (!m) {
-                last = m.error();
-                continue;
-            }
-            auto r = rewrite::rewrite_in_place(*var.rule, x, *m);
-            CATPLAN_ASSERT(r.has_value(), "a resolved match applies");
-            v.plan.steps.push_back(std::move(*step));
-            v.cost.steps.push_back(*cost);
-            v.cost.total += *cost;
-            applied = true;
-            break;
-        }
-        if (!applied) {
-            // The PDDL precondition holds, so some variant should have applied: a bug.
-            v.failed_step = i;
-            v.reason = fmt::format("{}: internal error: no rule applies ({})", prefix, last);
-        }
-    }
-    if (!v.failed_step) {
-        v.goal_reached = true;
-        for (const auto& l : im.pddl_problem->goal) {
-            if (holds(im, x, l.atom) != l.positive) {
-                v.goal_reached = false;
-                v.reason = fmt::format("goal not reached: {} does not hold", l.to_string());
-                break;
-            }
-        }
-        v.valid = v.goal_reached;
-    }
+    plan::Plan rules;
+    auto v =
+        replay_ipc_plan(im.pddl_domain, *im.pddl_problem, plan,
+                        [&](std::size_t, const IpcStep& s) -> std::optional<std::string> {
+                            const ActionVariants* av = im.find_action(s.action);
+                            CATPLAN_ASSERT(av != nullptr, "every action of the domain is imported");
+                            std::string last = "no rule variant fits the arguments";
+                            for (const auto& var : av->variants) {
+                                auto step = variant_step(var, s);
+                                if (!step) {
+                                    continue;
+                                }
+                                auto m = plan::resolve_step(*var.rule, x, *step);
+                                if (!m) {
+                                    last = m.error();
+                                    continue;
+                                }
+                                auto r = rewrite::rewrite_in_place(*var.rule, x, *m);
+                                CATPLAN_ASSERT(r.has_value(), "a resolved match applies");
+                                rules.steps.push_back(std::move(*step));
+                                return std::nullopt;
+                            }
+                            // The PDDL precondition holds, so some variant should have applied: a
+                            // bug.
+                            return fmt::format("internal error: no rule applies ({})", last);
+                        });
+    v.plan = std::move(rules);
     v.final_state = std::move(x);
     return v;
 }

@@ -12,11 +12,15 @@
 // the command line); validation judges the rest, a plan whose step does not apply or whose goal
 // is not reached.
 //
-// Validation replays the plan with PDDL's meaning on the imported rules: a step's arguments pick
-// the variants of its action consistent with them (import.hpp), and the one whose match exists
-// applies. When none does, the step failed because a PDDL precondition does not hold, and the
-// reason names the first such precondition as written in the domain, ground:
-// `step 3 (unstack e d): precondition (on e d) does not hold`.
+// Validation replays the plan with PDDL's own meaning, independent of the rule encoding: a state
+// is the set of ground atoms that hold; a step applies when each literal of its action's
+// precondition, ground with its arguments, holds (an equality when both sides name one object),
+// and then its deletes are removed and its adds added. A step that does not apply is reported
+// with the first precondition that fails, as written in the domain, ground:
+// `step 3 (unstack e d): precondition (on e d) does not hold`. validate_ipc_plan also replays each
+// step on the imported rules: the step's arguments pick the variants of its action consistent
+// with them (import.hpp), and the one whose match exists applies (that none does where PDDL's
+// precondition holds is an internal error, reported as the step's failure).
 
 #include "catplan/base/diagnostic.hpp"
 #include "catplan/pddl/costs.hpp"
@@ -79,8 +83,13 @@ struct IpcValidation {
     std::optional<acset::ACSet> final_state;
 };
 
-/// Replays an IPC plan on the import's problem and checks its goal.
+/// Replays an IPC plan on the import's problem and checks its goal, with PDDL's meaning and on
+/// the imported rules (the rule-level plan and the final state).
 IpcValidation validate_ipc_plan(const Import& import, const IpcPlan& plan);
+
+/// Replays an IPC plan on a PDDL problem with PDDL's meaning alone and checks its goal: the
+/// verdict and the cost (no rule-level plan, no final state).
+IpcValidation simulate_ipc_plan(const Domain& domain, const Problem& problem, const IpcPlan& plan);
 
 /// Whether a ground atom holds in a state of the imported schema.
 bool holds(const Import& import, const acset::ACSet& x, const Atom& atom);

@@ -127,6 +127,51 @@ TEST(PddlSemantics, ParametersMayBindTheSameObjectUnlessForbidden) {
     EXPECT_EQ(v.reason, "step 2 (connect a a): precondition (not (link a a)) does not hold");
 }
 
+TEST(PddlSemantics, SimulationGivesValidationsVerdictWithoutTheRules) {
+    struct Case {
+        const char *domain, *problem, *plan;
+    };
+
+    for (auto c : {Case{"blocksworld-domain.pddl", "blocksworld-p01.pddl",
+                        "(unstack e d)\n(put-down e)\n(unstack c d)\n"},
+                   {"blocksworld-domain.pddl", "blocksworld-p01.pddl", "(unstack e d)\n"},
+                   {"dup-domain.pddl", "dup-p01.pddl", "(connect-other a a)"},
+                   {"dup-domain.pddl", "dup-p01.pddl", "(connect a a)\n(connect a a)"},
+                   {"dup-domain.pddl", "dup-p01.pddl", "(connect a a)\n(connect-other a b)"}}) {
+        auto l = load(c.domain, c.problem);
+        ASSERT_TRUE(l->import) << l->errors();
+        auto plan = plan_text(c.plan);
+        auto v = validate_ipc_plan(*l->import, plan);
+        auto s = simulate_ipc_plan(*l->domain, *l->problem, plan);
+        EXPECT_EQ(s.valid, v.valid) << c.plan;
+        EXPECT_EQ(s.failed_step, v.failed_step) << c.plan;
+        EXPECT_EQ(s.reason, v.reason) << c.plan;
+        EXPECT_EQ(s.cost.total, v.cost.total) << c.plan;
+        EXPECT_TRUE(v.final_state.has_value());
+        EXPECT_FALSE(s.final_state.has_value());
+        EXPECT_TRUE(s.plan.steps.empty());
+    }
+    auto l = load("blocksworld-domain.pddl", "blocksworld-p01.pddl");
+    auto s = simulate_ipc_plan(*l->domain, *l->problem,
+                               plan_text(read(data("blocksworld-p01-invalid.plan"))));
+    EXPECT_EQ(s.reason, "step 3 (unstack c d): precondition (on c d) does not hold");
+    s = simulate_ipc_plan(*l->domain, *l->problem, plan_text("(fly e d)"));
+    EXPECT_EQ(s.failed_step, 0u);
+    EXPECT_NE(s.reason.find("unknown action 'fly'"), std::string::npos) << s.reason;
+}
+
+TEST(PddlSemantics, AnAtomAStepDeletesAndAddsHoldsAfterIt) {
+    auto l = load_text("(define (domain touch) (:predicates (on) (seen))\n"
+                       "  (:action touch :parameters () :precondition (on)\n"
+                       "    :effect (and (not (on)) (on) (seen))))",
+                       "(define (problem t1) (:domain touch) (:init (on))\n"
+                       "  (:goal (and (on) (seen))))");
+    ASSERT_TRUE(l->domain && l->problem) << l->errors();
+    auto s = simulate_ipc_plan(*l->domain, *l->problem, plan_text("(touch)\n(touch)"));
+    EXPECT_TRUE(s.valid) << s.reason;
+    EXPECT_EQ(s.cost.total, 2);
+}
+
 TEST(PddlSemantics, PlannerPlansAreValidIpcPlans) {
     for (auto [d, p] : {std::pair{"blocksworld-domain.pddl", "blocksworld-p01.pddl"},
                         {"gripper-domain.pddl", "gripper-p01.pddl"},
