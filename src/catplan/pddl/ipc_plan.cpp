@@ -6,6 +6,7 @@
 #include "catplan/plan/validate.hpp"
 #include "catplan/rewrite/dpo.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
@@ -301,6 +302,17 @@ public:
         }
     }
 
+    // Every atom that holds, sorted: "(on a b)".
+    std::vector<std::string> sorted() const {
+        std::vector<std::string> out;
+        out.reserve(atoms_.size());
+        for (const auto& k : atoms_) {
+            out.push_back("(" + k + ")");
+        }
+        std::sort(out.begin(), out.end());
+        return out;
+    }
+
 private:
     static std::string key(const Atom& g) {
         std::string k = g.predicate;
@@ -363,6 +375,7 @@ IpcValidation replay_ipc_plan(const Domain& d, const Problem& p, const IpcPlan& 
         }
         v.valid = v.goal_reached;
     }
+    v.final_facts = facts.sorted();
     return v;
 }
 

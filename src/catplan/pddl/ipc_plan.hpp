@@ -79,8 +79,10 @@ struct IpcValidation {
     plan::Plan plan;
     /// What the steps that applied cost (costs.hpp).
     PlanCost cost;
-    /// The last state reached.
+    /// The last state reached on the imported rules (validate_ipc_plan only).
     std::optional<acset::ACSet> final_state;
+    /// The ground atoms that hold in the last state reached, as PDDL reads it, sorted: "(on a b)".
+    std::vector<std::string> final_facts;
 };
 
 /// Replays an IPC plan on the import's problem and checks its goal, with PDDL's meaning and on

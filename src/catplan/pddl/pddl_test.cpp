@@ -6,7 +6,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <functional>
+#include <random>
 
 namespace catplan::pddl {
 namespace {
@@ -271,6 +273,54 @@ TEST(PddlRoundTrip, LogisticsKeepsItsPlans) {
 
 TEST(PddlRoundTrip, EqualityAndNegationKeepTheirPlans) {
     expect_round_trip_keeps_plans("dup-domain.pddl", "dup-p01.pddl", 3);
+}
+
+// The imported rules against PDDL's meaning, on seeded random walks: wherever PDDL lets a step
+// apply, a rule variant applies (validate_ipc_plan fails the step otherwise), and after every step
+// the facts of the rules' state are the atoms PDDL says hold.
+void expect_rules_follow_pddl(const std::string& d, const std::string& p, std::uint64_t seed) {
+    auto l = load(d, p);
+    ASSERT_TRUE(l->import) << l->errors();
+    auto actions = ground_actions(*l->domain, *l->problem);
+    std::mt19937_64 rng(seed);
+    for (int walk = 0; walk < 8; ++walk) {
+        IpcPlan plan;
+        for (int length = 0; length < 6; ++length) {
+            std::vector<const IpcStep*> applicable;
+            for (const auto& a : actions) {
+                plan.push_back(a);
+                if (!simulate_ipc_plan(*l->domain, *l->problem, plan).failed_step) {
+                    applicable.push_back(&a);
+                }
+                plan.pop_back();
+            }
+            if (applicable.empty()) {
+                break;
+            }
+            plan.push_back(*applicable[rng() % applicable.size()]);
+            auto v = validate_ipc_plan(*l->import, plan);
+            ASSERT_FALSE(v.failed_step) << d << ": " << v.reason << "\n" << write_ipc_plan(plan);
+            std::vector<std::string> rule_facts;
+            for (const auto& atom : l->import->facts(*v.final_state)) {
+                rule_facts.push_back(atom.to_string());
+            }
+            std::sort(rule_facts.begin(), rule_facts.end());
+            ASSERT_EQ(rule_facts, v.final_facts) << d << "\n" << write_ipc_plan(plan);
+        }
+    }
+}
+
+TEST(PddlSemantics, ImportedRulesFollowPddlOnRandomWalks) {
+    for (auto [d, p] : {std::pair{"blocksworld-domain.pddl", "blocksworld-p01.pddl"},
+                        {"gripper-domain.pddl", "gripper-p01.pddl"},
+                        {"logistics-domain.pddl", "logistics-p01.pddl"},
+                        {"dup-domain.pddl", "dup-p01.pddl"},
+                        {"lift-domain.pddl", "lift-p01.pddl"},
+                        {"shuttle-domain.pddl", "shuttle-p01.pddl"},
+                        {"stacker-domain.pddl", "stacker-p01.pddl"},
+                        {"shelving-domain.pddl", "shelving-p01.pddl"}}) {
+        expect_rules_follow_pddl(d, p, 20261204);
+    }
 }
 
 TEST(PddlSemantics, ConstantsArePinnedAndMayBeParameters) {
