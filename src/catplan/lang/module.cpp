@@ -124,6 +124,13 @@ Module load_file(const std::string& path, SourceManager& sources, DiagnosticSink
         sink.error(fmt::format("cannot read file '{}'", path));
         return {};
     }
+    if (detail::is_pddl_path(path)) {
+        // A PDDL file read alone (`catplan check domain.pddl`): its declarations are its own, as
+        // when a .cp file imports it; a problem needs its domain imported before it.
+        ctx.loaded.insert(detail::canonical_path(path));
+        detail::import_pddl_file(ctx, *file, SourceRange{}, false);
+        return std::move(ctx.module);
+    }
     detail::load_buffer(ctx, *file, detail::canonical_path(path), false);
     return std::move(ctx.module);
 }

@@ -95,8 +95,8 @@ struct LoadOptions {
     std::size_t max_fresh_parts = 100000;
 };
 
-/// Parses and elaborates a file and its imports; every error goes to `sink`; the module holds
-/// what succeeded.
+/// Parses and elaborates a file and its imports (a `.pddl` file: the domain it declares, as an
+/// import of it would); every error goes to `sink`; the module holds what succeeded.
 Module load_file(const std::string& path, SourceManager& sources, DiagnosticSink& sink,
                  const LoadOptions& options = {});
 /// Like load_file for text in memory; `name` is the display name and anchors relative imports.

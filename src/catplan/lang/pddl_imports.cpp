@@ -25,22 +25,26 @@ using schema::Generator;
 using schema::GeneratorKind;
 using schema::Schema;
 
+/// The position of the first character of text at or after i that is not blank or in a comment.
+std::size_t skip_blanks(std::string_view text, std::size_t i) {
+    while (i < text.size()) {
+        if (std::isspace(static_cast<unsigned char>(text[i]))) {
+            ++i;
+        } else if (text[i] == ';') {
+            while (i < text.size() && text[i] != '\n') {
+                ++i;
+            }
+        } else {
+            break;
+        }
+    }
+    return i;
+}
+
 /// "domain" or "problem": the word after `(define (`, lower-cased ("" if there is none).
 std::string pddl_kind(std::string_view text) {
     std::size_t i = 0;
-    auto skip = [&] {
-        while (i < text.size()) {
-            if (std::isspace(static_cast<unsigned char>(text[i]))) {
-                ++i;
-            } else if (text[i] == ';') {
-                while (i < text.size() && text[i] != '\n') {
-                    ++i;
-                }
-            } else {
-                return;
-            }
-        }
-    };
+    auto skip = [&] { i = skip_blanks(text, i); };
     auto word = [&] {
         skip();
         std::string w;
@@ -329,7 +333,13 @@ bool is_pddl_path(std::string_view path) {
 }
 
 void import_pddl_file(Elaborator& ctx, std::uint32_t file, SourceRange at, bool imported) {
-    std::string kind = pddl_kind(ctx.sources.text(file));
+    std::string_view text = ctx.sources.text(file);
+    if (!at.valid()) {
+        // A file read alone: its messages point at its first form.
+        auto b = static_cast<std::uint32_t>(skip_blanks(text, 0));
+        at = SourceRange{file, b, b + (b < text.size() ? 1U : 0U)};
+    }
+    std::string kind = pddl_kind(text);
     if (kind == "domain") {
         declare_domain(ctx, file, imported);
     } else if (kind == "problem") {

@@ -33,7 +33,8 @@ void load_buffer(Elaborator& ctx, std::uint32_t file, const std::string& key, bo
 /// Whether an imported path names a PDDL file (it ends in .pddl).
 bool is_pddl_path(std::string_view path);
 /// Declares a loaded PDDL file: a domain (its schema and domain named as the file's `(domain
-/// ...)`) or a problem of a domain imported before; errors at `at` or in the file.
+/// ...)`) or a problem of a domain imported before; errors at `at` (none: the file's first form)
+/// or in the file.
 void import_pddl_file(Elaborator& ctx, std::uint32_t file, SourceRange at, bool imported);
 /// Rewrites names spelled with hyphens (`courier-in`, which parses as a subtraction) into names,
 /// where they name a generator or action of an imported PDDL domain.

@@ -1,0 +1,1 @@
+check tests/pddl/bad-type.pddl

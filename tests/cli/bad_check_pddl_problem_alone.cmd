@@ -1,0 +1,1 @@
+check examples/pddl/blocks/p01-3.pddl

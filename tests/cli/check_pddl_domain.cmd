@@ -1,0 +1,1 @@
+check examples/pddl/blocks/blocks3.pddl examples/pddl/blocks/blocks4.pddl
