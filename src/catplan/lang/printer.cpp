@@ -82,6 +82,18 @@ std::string summarize(const Declaration& d) {
     if (d.kind == DeclKind::Rule) {
         return summarize_rule(*d.rule);
     }
+    if (d.kind == DeclKind::Domain && d.pddl != nullptr) {
+        // A PDDL domain by its actions, as its plans name them (a rule per variant: import.hpp).
+        std::vector<std::string> names;
+        for (const auto& a : d.pddl->actions) {
+            std::size_t n = a.variants.size();
+            names.push_back(n == 1 ? a.action
+                                   : fmt::format("{} ({})", a.action, plural(n, "rule")));
+        }
+        return fmt::format("domain {} ({}): {} ({}){}{}", d.name, d.schema->name(),
+                           plural(names.size(), "action"), plural(d.domain->rules.size(), "rule"),
+                           names.empty() ? "" : ": ", fmt::join(names, ", "));
+    }
     if (d.kind == DeclKind::Domain) {
         std::vector<std::string> names;
         for (const auto& r : d.domain->rules) {
