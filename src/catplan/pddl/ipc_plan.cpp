@@ -454,33 +454,6 @@ Result<IpcPlan> to_ipc_plan(const Import& import, const plan::Plan& plan) {
     return out;
 }
 
-bool holds(const Import& import, const acset::ACSet& x, const Atom& atom) {
-    const Predicate* pred = import.pddl_domain.find_predicate(atom.predicate);
-    ObId ob = import.predicate_ob.at(atom.predicate);
-    if (atom.args.empty()) {
-        return x.num_parts(ob) > 0;
-    }
-    std::vector<Part> parts;
-    for (std::size_t i = 0; i < atom.args.size(); ++i) {
-        auto p = x.find_part(import.type_ob.at(pred->params[i].type), atom.args[i].name);
-        if (!p) {
-            return false;
-        }
-        parts.push_back(*p);
-    }
-    const auto& homs = import.predicate_homs.at(atom.predicate);
-    for (Part f : x.incident(homs[0], parts[0])) {
-        bool all = true;
-        for (std::size_t i = 1; i < homs.size() && all; ++i) {
-            all = x.subpart(homs[i], f) == parts[i];
-        }
-        if (all) {
-            return true;
-        }
-    }
-    return false;
-}
-
 IpcValidation simulate_ipc_plan(const Domain& domain, const Problem& problem, const IpcPlan& plan) {
     return replay_ipc_plan(domain, problem, plan, {});
 }

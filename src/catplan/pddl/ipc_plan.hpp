@@ -93,7 +93,4 @@ IpcValidation validate_ipc_plan(const Import& import, const IpcPlan& plan);
 /// verdict and the cost (no rule-level plan, no final state).
 IpcValidation simulate_ipc_plan(const Domain& domain, const Problem& problem, const IpcPlan& plan);
 
-/// Whether a ground atom holds in a state of the imported schema.
-bool holds(const Import& import, const acset::ACSet& x, const Atom& atom);
-
 } // namespace catplan::pddl
