@@ -6,7 +6,8 @@ repository root, with umask 022). Further lines, each optional and in any order:
   absent: PATH     a file that must not exist afterwards (no partial output); removed before the run
   stdin: PATH      the file given to catplan as its standard input (else it reads nothing)
   before: SHELL    a shell command run from the root before catplan (to make the files a case needs:
-                   a file of a given mode, a symlink); its output is not compared
+                   a file of a given mode, a symlink, a file another catplan command writes: $CATPLAN
+                   is the catplan under test); its output is not compared
   after: SHELL     a shell command run from the root after catplan, whose stdout is compared too (to
                    show the files catplan wrote: their text, `stat -c '%a %F'`, a link's target)
 The expectation tests/cli/<name>.expected holds stdout, then `--- stderr` and stderr, then
@@ -26,9 +27,10 @@ def directives(lines, key):
     return [l[len(prefix):].strip() for l in lines[1:] if l.startswith(prefix)]
 
 
-def shell(command, root):
+def shell(command, root, catplan):
+    env = dict(os.environ, CATPLAN=str(pathlib.Path(catplan).resolve()))
     return subprocess.run(command, shell=True, cwd=root, capture_output=True, text=True,
-                          timeout=60, preexec_fn=lambda: os.umask(0o022))
+                          timeout=60, env=env, preexec_fn=lambda: os.umask(0o022))
 
 
 def main() -> int:
@@ -41,7 +43,7 @@ def main() -> int:
             (root / path).unlink()
     failures = []
     for command in directives(lines, "before"):
-        r = shell(command, root)
+        r = shell(command, root, catplan)
         if r.returncode != 0:
             failures.append(f"before: {command} failed: {r.stderr}")
     stdin = directives(lines, "stdin")
@@ -53,7 +55,7 @@ def main() -> int:
     actual = f"{out}--- stderr\n{err}--- exit {proc.returncode}\n"
     after = directives(lines, "after")
     if after:
-        actual += "--- after\n" + "".join(shell(c, root).stdout for c in after)
+        actual += "--- after\n" + "".join(shell(c, root, catplan).stdout for c in after)
     expected_path = case.with_suffix(".expected")
     if os.environ.get("CATPLAN_UPDATE_GOLDEN"):
         expected_path.write_text(actual, encoding="utf-8")

@@ -83,8 +83,10 @@ def migration(url):
     run("migrate", MAP, "--map", "ColorToKitchen", "--db", url,
         out="migrated the tables of ColorBlocksworld along ColorToKitchen into the tables of KitchenWorld")
     text = run("db", "import", MAP, "KitchenWorld", "--db", url)
-    for want in ("(_BreadSliced1, _BreadSliced2)::BreadSliced", "breadSlicedIsObject(_BreadSliced1) == D",
-                 "breadSlicedIsObject(_BreadSliced2) == E"):
+    # The BreadSliced parts are named D and E, as the Object parts are: the printer writes them
+    # as D_BreadSliced and E_BreadSliced.
+    for want in ("(D_BreadSliced, E_BreadSliced)::BreadSliced", "breadSlicedIsObject(D_BreadSliced) == D",
+                 "breadSlicedIsObject(E_BreadSliced) == E"):
         if want not in text:
             failures.append(f"db import of the migration lacks {want!r}:\n{text}")
     run("migrate", MAP, "--map", "ColorToKitchen", "--db", url, code=2,

@@ -6,6 +6,7 @@
 #include "catplan/cli/json_output.hpp"
 #include "catplan/cli/pddl_export.hpp"
 #include "catplan/cli/plan_commands.hpp"
+#include "catplan/lang/syntax.hpp"
 #include "catplan/migrate/migration.hpp"
 #include "catplan/pddl/costs.hpp"
 #include "catplan/pddl/export.hpp"
@@ -18,6 +19,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 #include <ostream>
+#include <tuple>
 
 namespace catplan::cli {
 
@@ -79,31 +81,87 @@ std::vector<std::string> negative_goals(const pddl::Import& im) {
     return out;
 }
 
-/// The imported domain and problem in catplan's language, the rules as comments.
-std::string import_text(const pddl::Import& im, const std::string& domain_file) {
-    std::string out = fmt::format("# Imported by catplan from {}.\n", domain_file);
-    out +=
-        "# Each PDDL action is one rule per identification of its parameters and per open fact\n"
-        "# (src/catplan/pddl/import.hpp): the rules, with their parameters, are listed below.\n\n";
-    out += lang::print_schema(*im.domain->schema) + "\n";
-    if (im.problem != nullptr) {
-        out += lang::print_instance(*im.problem->initial, "Initial") + "\n";
-        out += lang::print_instance(*im.problem->goal, "Goal") + "\n";
-        auto negative = negative_goals(im);
-        if (!negative.empty()) {
-            // Said, not dropped: an instance cannot ask that a fact be absent.
-            out += fmt::format("# The goal also asks for {}: a negative goal, which Goal cannot "
-                               "say;\n# the PDDL files keep it (`@import`, `plan`, `validate`, "
-                               "`transfer`).\n\n",
-                               fmt::join(negative, " and "));
+/// The imported domain as `@domain <name>_domain(<name>)`: named apart from its schema, which
+/// keeps the PDDL name that maps refer to. A cost read from a problem's function cannot be
+/// written: the rule keeps its constant part and a comment says what is left out.
+std::string domain_text(const pddl::Import& im) {
+    plan::Domain d = *im.domain;
+    d.name += "_domain";
+    std::vector<std::string> dropped;
+    for (auto& rule : d.rules) {
+        if (rule->cost && !rule->cost->depends_on.empty()) {
+            auto copy = std::make_shared<rewrite::Rule>(*rule);
+            dropped.push_back(fmt::format("{}: {}", rule->name, rule->cost->depends_on));
+            copy->cost->depends_on.clear();
+            rule = std::move(copy);
         }
     }
-    for (const auto& a : im.actions) {
-        out += fmt::format("# action {}: {} rule{}{}\n", a.action, a.variants.size(),
-                           a.variants.size() == 1 ? "" : "s", cost_words(im, a.action, "; "));
-        for (const auto& v : a.variants) {
-            out += "#   " + lang::summarize_rule(*v.rule) + "\n";
+    auto text = lang::print_domain(d);
+    // An imported rule is always writable: no attribute variables, expressions or SPO, and
+    // every created fact has all its arguments.
+    CATPLAN_ASSERT(text.has_value(), "an imported PDDL domain cannot be written");
+    std::string out;
+    if (!dropped.empty()) {
+        out = fmt::format("# Costs read from the problem's functions are left out (the PDDL files "
+                          "keep them):\n#   {}\n",
+                          fmt::join(dropped, "\n#   "));
+    }
+    return out + *text;
+}
+
+/// The objects of the PDDL types, most specific first: a PDDL object is a part of its type and
+/// of each ancestor, all named alike, and its name goes to the part of its own type.
+std::vector<ObId> types_deepest_first(const pddl::Import& im) {
+    // A subtype has every ancestor of its supertype and that supertype: strictly more.
+    std::vector<std::tuple<std::size_t, ObId>> types;
+    for (const auto& [type, ob] : im.type_ob) {
+        std::size_t ancestors = 0;
+        for (const auto& [other, _] : im.type_ob) {
+            ancestors += other != type && im.pddl_domain.is_subtype(type, other) ? 1 : 0;
         }
+        types.emplace_back(ancestors, ob);
+    }
+    std::sort(types.begin(), types.end(), [](const auto& a, const auto& b) {
+        return std::get<0>(a) != std::get<0>(b) ? std::get<0>(a) > std::get<0>(b)
+                                                : std::get<1>(a) < std::get<1>(b);
+    });
+    std::vector<ObId> out;
+    for (const auto& [ancestors, ob] : types) {
+        out.push_back(ob);
+    }
+    return out;
+}
+
+/// The imported domain and problem in catplan's language: schema, states, rules and problem.
+std::string import_text(const pddl::Import& im, const std::string& domain_file) {
+    std::string out = fmt::format("# Imported by catplan from {}.\n", domain_file);
+    out += "# Each PDDL action is one rule per identification of its parameters and per open fact\n"
+           "# (src/catplan/pddl/import.hpp)";
+    for (const auto& a : im.actions) {
+        if (a.variants.size() > 1) {
+            out += fmt::format(": `{}` is the second rule of the action `{}`",
+                               a.variants[1].rule->name, a.action);
+            break;
+        }
+    }
+    out += ".\n# The predicates are facts: a fact that is added where it holds is not added "
+           "again.\n\n";
+    out += lang::print_schema(*im.domain->schema) + "\n";
+    out += domain_text(im);
+    if (im.problem != nullptr) {
+        auto order = types_deepest_first(im);
+        out += "\n" + lang::print_instance(*im.problem->initial, "Initial", order) + "\n";
+        out += lang::print_instance(*im.problem->goal, "Goal", order) + "\n";
+        auto problem =
+            lang::print_problem(*im.problem, im.domain->name + "_domain", "Initial", "Goal", order);
+        // An imported goal condition is a fact added to the goal: always writable.
+        CATPLAN_ASSERT(problem.has_value(), "an imported PDDL problem cannot be written");
+        auto negative = negative_goals(im);
+        if (!negative.empty()) {
+            out += fmt::format("# The negative goals {} are the NAC blocks.\n",
+                               fmt::join(negative, ", "));
+        }
+        out += *problem;
     }
     return out;
 }

@@ -4,6 +4,7 @@
 #include "catplan/lang/detail/colimit.hpp"
 
 #include <fmt/format.h>
+#include <map>
 
 namespace catplan::lang::detail {
 
@@ -212,6 +213,67 @@ std::optional<std::pair<Term, SourceRange>> Colimit::generator(const std::string
         return std::nullopt;
     }
     return std::make_pair(resolved(it->second.term), it->second.range);
+}
+
+Colimit::StateNodes Colimit::add_state(const ACSet& x, SourceRange range) {
+    const Schema& s = schema();
+    StateNodes nodes;
+    nodes.parts.resize(s.num_obs());
+    nodes.vars.resize(s.num_attr_types());
+    // A name that two parts or variables share names neither (print_instance would write one
+    // of them under a generated name).
+    std::map<std::string, int> uses;
+    for (std::uint32_t t = 0; t < s.num_attr_types(); ++t) {
+        for (std::uint32_t j = 0; j < x.num_vars(AttrTypeId(t)); ++j) {
+            ++uses[std::string(x.var_name(AttrTypeId(t), j))];
+        }
+    }
+    for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
+        for (Part p = 0; p < x.num_parts(ObId(o)); ++p) {
+            ++uses[std::string(x.part_name(ObId(o), p))];
+        }
+    }
+    auto named = [&](std::string_view name, Term term) {
+        std::string n(name);
+        if (!n.empty() && uses[n] == 1 && gens_.emplace(n, Gen{term, range}).second) {
+            gen_order_.push_back(n);
+        }
+    };
+    for (std::uint32_t t = 0; t < s.num_attr_types(); ++t) {
+        for (std::uint32_t j = 0; j < x.num_vars(AttrTypeId(t)); ++j) {
+            auto v = p_.add_value(AttrTypeId(t), x.var_name(AttrTypeId(t), j));
+            nodes.vars[t].push_back(v);
+            named(x.var_name(AttrTypeId(t), j), Term{Term::Kind::Value, v, nullptr});
+        }
+    }
+    for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
+        for (Part p = 0; p < x.num_parts(ObId(o)); ++p) {
+            auto node = p_.add_part(ObId(o), x.part_name(ObId(o), p));
+            nodes.parts[o].push_back(node);
+            named(x.part_name(ObId(o), p), Term{Term::Kind::Part, node, nullptr});
+        }
+    }
+    for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
+        for (Part p = 0; p < x.num_parts(ObId(o)); ++p) {
+            std::uint32_t node = nodes.parts[o][p];
+            for (HomId f : s.homs_from(ObId(o))) {
+                if (Part q = x.subpart(f, p); q != kNoPart) {
+                    p_.set_hom(node, f, nodes.parts[s.hom(f).codom.index()][q]);
+                }
+            }
+            for (AttrId a : s.attrs_from(ObId(o))) {
+                const Value& v = x.subpart(a, p);
+                if (v.is_var()) {
+                    p_.set_attr(node, a, nodes.vars[s.attr(a).codom.index()][v.var_index()]);
+                } else if (!v.is_unset()) {
+                    auto value = p_.add_value(s.attr(a).codom);
+                    p_.set_literal(value, v);
+                    p_.set_attr(node, a, value);
+                }
+            }
+        }
+    }
+    return nodes;
 }
 
 ACSet Colimit::build_partial() {

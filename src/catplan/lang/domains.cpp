@@ -1,14 +1,17 @@
 // Domains and problems (docs/language.md, "Domains and problems"): `@domain Name(Schema)` gathers
 // rules (written inside or named), `@problem Name(Domain)` names an initial and a goal instance.
 
+#include "catplan/lang/detail/colimit.hpp"
 #include "catplan/lang/detail/elaboration.hpp"
 #include "catplan/lang/detail/elaborator.hpp"
 #include "catplan/lang/detail/rule_elaboration.hpp"
 #include "catplan/plan/domain.hpp"
 
+#include <algorithm>
 #include <fmt/format.h>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 
 namespace catplan::lang::detail {
@@ -92,6 +95,39 @@ rewrite::RulePtr domain_rule(Elaborator& ctx, const Expr& st,
     return nullptr;
 }
 
+// `facts = (on, clear)`: objects of the schema whose parts are facts, each held at most once
+// (rewrite::Rule::relations), in every rule of the domain. False after an error.
+bool domain_facts(Elaborator& ctx, const Expr& st, const schema::Schema& s,
+                  std::vector<ObId>& facts) {
+    DiagnosticSink& sink = ctx.sink;
+    const Expr& v = st.args[1];
+    std::vector<const Expr*> names;
+    if (v.kind == Expr::Kind::Tuple) {
+        for (const auto& a : v.args) {
+            names.push_back(&a);
+        }
+    } else {
+        names.push_back(&v);
+    }
+    bool ok = true;
+    for (const Expr* n : names) {
+        auto ob = n->kind == Expr::Kind::Name ? s.find_ob(n->text) : std::nullopt;
+        if (!ob) {
+            sink.error(n->range, fmt::format("expected an object of schema '{}' as a fact, found "
+                                             "'{}'",
+                                             s.name(), to_string(*n)));
+            ok = false;
+        } else if (std::find(facts.begin(), facts.end(), *ob) != facts.end()) {
+            sink.error(n->range, fmt::format("'{}' is given twice", n->text));
+            ok = false;
+        } else {
+            facts.push_back(*ob);
+        }
+    }
+    std::sort(facts.begin(), facts.end());
+    return ok;
+}
+
 // `initial = I` or `goal = G` of a problem on domain dd into its slot; false after an error.
 bool problem_instance(Elaborator& ctx, const Expr& st, const Declaration& dd,
                       const std::string& dname, std::shared_ptr<const ACSet>* slots[2],
@@ -100,8 +136,8 @@ bool problem_instance(Elaborator& ctx, const Expr& st, const Declaration& dd,
     if (!st.is_binary("=") || st.args[0].kind != Expr::Kind::Name ||
         (st.args[0].text != "initial" && st.args[0].text != "goal") ||
         st.args[1].kind != Expr::Kind::Name) {
-        sink.error(st.range, fmt::format("expected 'initial = Instance' or 'goal = "
-                                         "Instance', found '{}'",
+        sink.error(st.range, fmt::format("expected 'initial = Instance', 'goal = Instance' or "
+                                         "a goal condition 'NAC => begin ... end', found '{}'",
                                          to_string(st)));
         return false;
     }
@@ -129,6 +165,60 @@ bool problem_instance(Elaborator& ctx, const Expr& st, const Declaration& dd,
     return true;
 }
 
+// The statements of `NAC => begin ... end` (or `@join begin ... end`), or nullptr.
+const std::vector<Expr>* condition_block(const Expr& st) {
+    if (!st.is_binary("=>") || st.args[0].kind != Expr::Kind::Name ||
+        (st.args[0].text != "NAC" && st.args[0].text != "PAC")) {
+        return nullptr;
+    }
+    return block_body(st.args[1]);
+}
+
+// A goal condition `NAC => begin ... end`: N is the goal together with the block, whose names
+// refer to the goal's generators; n : goal -> N is the inclusion. nullopt after an error.
+std::optional<rewrite::ApplicationCondition> goal_condition(Elaborator& ctx, const Expr& st,
+                                                            const std::vector<Expr>& body,
+                                                            const ACSet& goal, std::size_t index) {
+    DiagnosticSink& sink = ctx.sink;
+    std::size_t errors = sink.num_errors();
+    Colimit c(goal.schema_ptr(), ctx.inferred_kinds(goal.schema()));
+    auto nodes = c.add_state(goal, st.range);
+    for (const auto& b : body) {
+        if (b.is_binary("::")) {
+            c.declare(b, sink);
+        }
+    }
+    for (const auto& b : body) {
+        if (b.is_binary("==")) {
+            c.equation(b, sink);
+        } else if (!b.is_binary("::")) {
+            sink.error(b.range, fmt::format("expected a generator (x::Block) or an equation (f(x) "
+                                            "== y), found '{}'",
+                                            to_string(b)));
+        }
+    }
+    if (sink.num_errors() != errors) {
+        return std::nullopt;
+    }
+    ACSet N = c.build_partial();
+    hom::ACSetMorphism n;
+    n.components.resize(nodes.parts.size());
+    for (std::size_t o = 0; o < nodes.parts.size(); ++o) {
+        for (auto node : nodes.parts[o]) {
+            n.components[o].push_back(c.built_part(node));
+        }
+    }
+    n.var_components.resize(nodes.vars.size());
+    for (std::size_t t = 0; t < nodes.vars.size(); ++t) {
+        for (auto node : nodes.vars[t]) {
+            n.var_components[t].push_back(c.built_value(node));
+        }
+    }
+    const std::string& kind = st.args[0].text;
+    return rewrite::ApplicationCondition{fmt::format("{} {}", kind, index + 1), kind == "NAC",
+                                         std::move(N), std::move(n), st.range};
+}
+
 } // namespace
 
 void elaborate_domain(Elaborator& ctx, const MacroCall& form, bool imported) {
@@ -149,7 +239,18 @@ void elaborate_domain(Elaborator& ctx, const MacroCall& form, bool imported) {
     domain->schema = schema;
     domain->range = h[0].name_range;
     std::map<std::string, SourceRange> seen;
+    std::optional<std::vector<ObId>> facts;
     for (const auto& st : form.body) {
+        if (st.is_binary("=") && st.args[0].kind == Expr::Kind::Name &&
+            st.args[0].text == "facts") {
+            if (facts) {
+                sink.error(st.range, "the facts are given twice");
+            } else {
+                facts.emplace();
+                domain_facts(ctx, st, *schema, *facts);
+            }
+            continue;
+        }
         SourceRange at;
         rewrite::RulePtr rule = domain_rule(ctx, st, schema, at);
         if (!rule) {
@@ -173,6 +274,13 @@ void elaborate_domain(Elaborator& ctx, const MacroCall& form, bool imported) {
     }
     if (sink.num_errors() != errors || !ctx.claim_name(domain->name, domain->range)) {
         return;
+    }
+    if (facts) {
+        for (auto& rule : domain->rules) {
+            auto copy = std::make_shared<rewrite::Rule>(*rule);
+            copy->relations = *facts;
+            rule = std::move(copy);
+        }
     }
     Declaration d =
         new_declaration(DeclKind::Domain, domain->name, domain->range, imported, schema);
@@ -203,13 +311,28 @@ void elaborate_problem(Elaborator& ctx, const MacroCall& form, bool imported) {
     problem->range = h[0].name_range;
     std::string names[2];
     std::shared_ptr<const ACSet>* slots[2] = {&problem->initial, &problem->goal};
+    std::vector<std::pair<const Expr*, const std::vector<Expr>*>> conditions;
     for (const auto& st : form.body) {
-        problem_instance(ctx, st, *dd, dname.text, slots, names);
+        if (const auto* body = condition_block(st)) {
+            conditions.emplace_back(&st, body);
+        } else {
+            problem_instance(ctx, st, *dd, dname.text, slots, names);
+        }
     }
     for (int i = 0; i < 2; ++i) {
         if (slots[i]->get() == nullptr && sink.num_errors() == errors) {
             sink.error(form.range, fmt::format("problem '{}' needs '{} = Instance'", problem->name,
                                                i == 0 ? "initial" : "goal"));
+        }
+    }
+    if (sink.num_errors() == errors) {
+        // Negative goals (PDDL's `(not (on a b))`): conditions on the goal's embedding.
+        for (const auto& [st, body] : conditions) {
+            auto c =
+                goal_condition(ctx, *st, *body, *problem->goal, problem->goal_conditions.size());
+            if (c) {
+                problem->goal_conditions.push_back(std::move(*c));
+            }
         }
     }
     if (sink.num_errors() != errors || !ctx.claim_name(problem->name, problem->range)) {

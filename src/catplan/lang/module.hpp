@@ -23,6 +23,7 @@
 
 #include "catplan/acset/acset.hpp"
 #include "catplan/base/diagnostic.hpp"
+#include "catplan/base/result.hpp"
 #include "catplan/base/source.hpp"
 #include "catplan/migrate/schema_map.hpp"
 #include "catplan/pddl/import.hpp"
@@ -31,6 +32,7 @@
 #include "catplan/schema/schema.hpp"
 
 #include <memory>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -119,7 +121,26 @@ std::string summarize_rule(const rewrite::Rule& rule);
 std::string print_schema(const schema::Schema& s);
 /// The state in @acset_colim form on its schema's name, loadable again to an equal state (==)
 /// with the same names for names that are identifiers; unnamed parts and variables get
-/// generated names (`_Block3`). Unset cells cannot be written and are listed as comments.
-std::string print_instance(const acset::ACSet& x, std::string_view name);
+/// generated names (`_Block3`), and a name that two parts share is kept by the first (the parts
+/// of the objects `name_first`, in that order, then the others) and becomes `a_Block` for the
+/// others. Unset cells cannot be written and are listed as comments.
+std::string print_instance(const acset::ACSet& x, std::string_view name,
+                           std::span<const ObId> name_first = {});
+/// The name printers give the part `index` (0-based) of `kind` when the name it wants is taken
+/// or cannot be written: `a_Block` for a wanted `a`, `_Block3` for none.
+std::string generated_name(std::string_view wanted, std::string_view kind, std::uint32_t index);
+/// The rule as a domain's `@rule name(params) begin ... end`, loadable again (inside a domain on
+/// its schema) to the same rule up to the order of parts; or why the language cannot write it.
+Result<std::string> print_rule(const rewrite::Rule& rule);
+/// The domain as `@domain Name(Schema) begin ... end` with its facts and rules (print_rule), or
+/// why it cannot be written.
+Result<std::string> print_domain(const plan::Domain& d);
+/// `@problem Name(domain) begin initial = ...; goal = ... end` naming the instances printed as
+/// `initial` and `goal` (the goal by print_instance with `name_first`), with a `NAC => begin ...
+/// end` block per negative goal condition (`PAC` for a positive one); or why it cannot be
+/// written.
+Result<std::string> print_problem(const plan::Problem& p, std::string_view domain,
+                                  std::string_view initial, std::string_view goal,
+                                  std::span<const ObId> name_first = {});
 
 } // namespace catplan::lang

@@ -1,3 +1,4 @@
+#include "catplan/lang/detail/printing.hpp"
 #include "catplan/lang/module.hpp"
 #include "catplan/lang/syntax.hpp"
 
@@ -38,6 +39,13 @@ std::string path_term(const Schema& s, const Path& p) {
 }
 
 } // namespace
+
+std::string generated_name(std::string_view wanted, std::string_view kind, std::uint32_t index) {
+    if (wanted.empty() || wanted.find_first_of("\n\r") != std::string_view::npos) {
+        return fmt::format("_{}{}", kind, index + 1);
+    }
+    return fmt::format("{}_{}", wanted, kind);
+}
 
 std::string summarize_rule(const rewrite::Rule& rule) {
     // Each name once: a migrated rule carries a parameter to every target object that has it
@@ -182,17 +190,19 @@ std::string print_schema(const Schema& s) {
     return out + "end\n";
 }
 
-std::string print_instance(const ACSet& x, std::string_view name) {
+namespace detail {
+
+StateNames state_names(const ACSet& x, std::span<const ObId> name_first) {
     const Schema& s = x.schema();
     // Every part and variable becomes a generator; the names must be distinct identifiers that
     // do not shadow each other, so others get generated names.
     std::set<std::string> used;
-    auto pick = [&](std::string_view wanted, std::string fallback) {
+    auto pick = [&](std::string_view wanted, std::string_view kind, std::uint32_t index) {
         std::string n(wanted);
         // A name that is not an identifier is written quoted (var"on-table"); one with a line
         // break in it could not be.
         if (n.empty() || n.find_first_of("\n\r") != std::string::npos || used.count(n)) {
-            n = std::move(fallback);
+            n = generated_name(wanted, kind, index);
             while (used.count(n)) {
                 n += "_";
             }
@@ -200,21 +210,35 @@ std::string print_instance(const ACSet& x, std::string_view name) {
         used.insert(n);
         return n;
     };
-    std::vector<std::vector<std::string>> part_names(s.num_obs());
+    std::vector<ObId> order(name_first.begin(), name_first.end());
     for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
-        for (Part p = 0; p < x.num_parts(ObId(o)); ++p) {
-            part_names[o].push_back(
-                pick(x.part_name(ObId(o), p), fmt::format("_{}{}", s.ob(ObId(o)).name, p + 1)));
+        if (std::find(order.begin(), order.end(), ObId(o)) == order.end()) {
+            order.push_back(ObId(o));
         }
     }
-    std::vector<std::vector<std::string>> var_names(s.num_attr_types());
+    StateNames names;
+    names.parts.resize(s.num_obs());
+    for (ObId ob : order) {
+        for (Part p = 0; p < x.num_parts(ob); ++p) {
+            names.parts[ob.index()].push_back(pick(x.part_name(ob, p), s.ob(ob).name, p));
+        }
+    }
+    names.vars.resize(s.num_attr_types());
     for (std::uint32_t t = 0; t < s.num_attr_types(); ++t) {
         for (std::uint32_t j = 0; j < x.num_vars(AttrTypeId(t)); ++j) {
-            var_names[t].push_back(
-                pick(x.var_name(AttrTypeId(t), j),
-                     fmt::format("_{}{}", s.attr_type(AttrTypeId(t)).name, j + 1)));
+            names.vars[t].push_back(
+                pick(x.var_name(AttrTypeId(t), j), s.attr_type(AttrTypeId(t)).name, j));
         }
     }
+    return names;
+}
+
+} // namespace detail
+
+std::string print_instance(const ACSet& x, std::string_view name,
+                           std::span<const ObId> name_first) {
+    const Schema& s = x.schema();
+    auto [part_names, var_names] = detail::state_names(x, name_first);
     for (auto* names : {&part_names, &var_names}) {
         for (auto& row : *names) {
             for (auto& n : row) {

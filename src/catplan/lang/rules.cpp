@@ -26,22 +26,35 @@ using acset::Value;
 using schema::Schema;
 using schema::ValueKind;
 
-// The statements of `Pre => @join begin ... end` / `Pre => begin ... end` into src.blocks.
+// `cost = 3`: what a step of the rule costs (PDDL's action costs), a non-negative Int.
+void rule_cost(const Expr& st, RuleSource& src, DiagnosticSink& sink) {
+    const Expr& v = st.args[1];
+    if (src.cost != nullptr) {
+        auto& d = sink.error(st.range, "the cost is given twice");
+        d.notes.emplace_back(src.cost->range, "first given here");
+    } else if (v.kind != Expr::Kind::Int || v.int_value < 0) {
+        sink.error(v.range, fmt::format("expected the cost as a non-negative integer, found '{}'",
+                                        to_string(v)));
+    } else {
+        src.cost = &st;
+    }
+}
+
+// The statements of `Pre => @join begin ... end` / `Pre => begin ... end` into src.blocks, and
+// the rule's `cost = N`.
 void rule_blocks(const std::vector<Expr>& body, RuleSource& src, DiagnosticSink& sink) {
     static const std::vector<std::string> ours = {"Pre", "Keep", "Eff", "NAC", "PAC"};
     static const std::vector<std::string> span = {"L", "K", "R", "l", "r"};
     const auto& allowed = src.span_form ? span : ours;
     std::map<std::string, SourceRange> seen;
     for (const auto& st : body) {
+        if (st.is_binary("=") && st.args[0].kind == Expr::Kind::Name && st.args[0].text == "cost") {
+            rule_cost(st, src, sink);
+            continue;
+        }
         const std::vector<Expr>* stmts = nullptr;
         if (st.is_binary("=>") && st.args[0].kind == Expr::Kind::Name) {
-            const Expr& rhs = st.args[1];
-            if (rhs.kind == Expr::Kind::Block) {
-                stmts = &rhs.args;
-            } else if (rhs.kind == Expr::Kind::Macro && rhs.macro->name == "join" &&
-                       rhs.macro->has_body && rhs.macro->header.empty()) {
-                stmts = &rhs.macro->body;
-            }
+            stmts = block_body(st.args[1]);
         }
         if (stmts == nullptr) {
             sink.error(st.range, fmt::format("expected a block of the rule, '{} => @join begin ... "
@@ -74,6 +87,17 @@ void rule_blocks(const std::vector<Expr>& body, RuleSource& src, DiagnosticSink&
 }
 
 } // namespace
+
+const std::vector<Expr>* block_body(const Expr& e) {
+    if (e.kind == Expr::Kind::Block) {
+        return &e.args;
+    }
+    if (e.kind == Expr::Kind::Macro && e.macro->name == "join" && e.macro->has_body &&
+        e.macro->header.empty()) {
+        return &e.macro->body;
+    }
+    return nullptr;
+}
 
 bool rule_source(Elaborator& ctx, const MacroCall& form, const std::string& assigned,
                  SourceRange assigned_range, const std::shared_ptr<Schema>& default_schema,
@@ -231,6 +255,9 @@ public:
             }
         }
         parameters(*rule);
+        if (src_.cost != nullptr) {
+            rule->cost = rewrite::Cost{src_.cost->args[1].int_value, ""};
+        }
         effect_exprs(*rule);
         if (failed()) {
             return nullptr;

@@ -459,5 +459,84 @@ end
     EXPECT_NE(out.find("type error"), std::string::npos) << out;
 }
 
+TEST(Rules, FactsAreHeldOnceAndACostIsWhatAStepCosts) {
+    auto l = load_text(R"(
+@present S(FreeSchema) begin
+  (Thing, Mark)::Ob
+  marks::Hom(Mark, Thing)
+end
+@acset_colim Start(S) begin
+  t::Thing
+end
+@domain D(S) begin
+  facts = Mark
+  @rule tag(a) begin
+    cost = 3
+    Pre => begin
+      a::Thing
+    end
+    Keep => begin
+      a::Thing
+    end
+    Eff => begin
+      m::Mark
+      marks(m) == a
+    end
+  end
+end
+)");
+    ASSERT_FALSE(l->sink.has_errors()) << l->sink.render();
+    const auto& rule = *l->module.find("D")->domain->rules.at(0);
+    ASSERT_TRUE(rule.cost.has_value());
+    EXPECT_EQ(rule.cost->constant, 3);
+    ACSet x = *l->module.find("Start")->instance;
+    ObId mark = ob(x, "Mark");
+    EXPECT_EQ(rule.relations, std::vector<ObId>{mark});
+    // A fact added where it holds is not added again: tagging twice leaves one mark.
+    for (int i = 0; i < 2; ++i) {
+        auto matches = rewrite::find_matches(rule, x);
+        ASSERT_EQ(matches.size(), 1u);
+        ASSERT_TRUE(rewrite::rewrite_in_place(rule, x, matches[0]).has_value());
+        EXPECT_EQ(x.num_parts(mark), 1u);
+    }
+}
+
+TEST(Rules, BadCostsAndFactsAreLocated) {
+    auto l = load_text(R"(
+@present S(FreeSchema) begin
+  Thing::Ob
+end
+@domain D(S) begin
+  facts = (Thing, Nothing, Thing)
+  facts = Thing
+  @rule a(x) begin
+    cost = -1
+    Pre => begin
+      x::Thing
+    end
+  end
+  @rule b(x) begin
+    cost = 1
+    cost = 2
+    Pre => begin
+      x::Thing
+    end
+  end
+end
+)");
+    std::string out = l->sink.render();
+    EXPECT_NE(out.find("test.cp:6:19: error: expected an object of schema 'S' as a fact, found "
+                       "'Nothing'"),
+              std::string::npos)
+        << out;
+    EXPECT_NE(out.find("test.cp:6:28: error: 'Thing' is given twice"), std::string::npos) << out;
+    EXPECT_NE(out.find("test.cp:7:3: error: the facts are given twice"), std::string::npos) << out;
+    EXPECT_NE(out.find("test.cp:9:12: error: expected the cost as a non-negative integer, found "
+                       "'-1'"),
+              std::string::npos)
+        << out;
+    EXPECT_NE(out.find("test.cp:16:5: error: the cost is given twice"), std::string::npos) << out;
+}
+
 } // namespace
 } // namespace catplan::lang

@@ -60,6 +60,16 @@ public:
     /// Rules: a generator declared again with the same type is the same generator.
     void allow_redeclare() { allow_redeclare_ = true; }
 
+    /// The nodes of a state added to the presentation.
+    struct StateNodes {
+        std::vector<std::vector<std::uint32_t>> parts; // per object, per part
+        std::vector<std::vector<std::uint32_t>> vars;  // per attribute type, per variable
+    };
+
+    /// Adds a built state, part for part and cell for cell: its parts and variables become
+    /// generators named as they are (a name that two share names neither), declared at `range`.
+    StateNodes add_state(const acset::ACSet& x, SourceRange range);
+
     /// The generator with this name: its term (node resolved) and declaration range.
     std::optional<std::pair<Term, SourceRange>> generator(const std::string& name);
 

@@ -36,7 +36,11 @@ struct RuleSource {
     bool has_params = false;
     std::vector<const Expr*> params;
     std::vector<RuleBlock> blocks;
+    const Expr* cost = nullptr; // `cost = 3`, what a step of the rule costs
 };
+
+/// The statements of a block, `begin ... end` or `@join begin ... end`, or nullptr.
+const std::vector<Expr>* block_body(const Expr& e);
 
 /// The rule form `form` named `assigned` (from an assignment or a domain's `:name =>`), with
 /// `default_schema` when the form names none (inside a domain). False after an error.
