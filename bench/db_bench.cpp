@@ -14,6 +14,7 @@
 //
 // Every database run is checked: the number of rows it made equals the in-memory migration's.
 
+#include "catplan/base/process.hpp"
 #include "catplan/db/library.hpp"
 #include "catplan/db/migrate_sql.hpp"
 #include "catplan/db/tables.hpp"
@@ -195,7 +196,7 @@ void migration_rows(const char* workload, const migrate::SchemaMap& f, const acs
 }
 
 long peak_rss_kib() {
-    return transfer::peak_rss_kib();
+    return catplan::peak_rss_kib();
 }
 
 // Stores `plans` copies of the case study's plan in a fresh library at url.
