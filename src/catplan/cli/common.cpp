@@ -1,5 +1,6 @@
 #include "catplan/cli/common.hpp"
 
+#include "catplan/acset/printer.hpp"
 #include "catplan/base/output_file.hpp"
 #include "catplan/cli/commands.hpp"
 #include "catplan/cli/options.hpp"
@@ -101,6 +102,31 @@ std::string declared_names(const lang::Module& m) {
         names += (names.empty() ? "" : ", ") + d.name;
     }
     return names.empty() ? "none" : names;
+}
+
+std::string indent(const std::string& text, std::size_t n) {
+    std::string out, pad(n, ' ');
+    std::size_t start = 0;
+    while (start < text.size()) {
+        std::size_t end = text.find('\n', start);
+        end = end == std::string::npos ? text.size() : end + 1;
+        out += pad + text.substr(start, end - start);
+        start = end;
+    }
+    return out;
+}
+
+std::string rule_tables(const rewrite::Rule& rule, std::size_t n) {
+    std::string out = indent(lang::summarize_rule(rule) + "\n", n);
+    std::vector<std::pair<std::string, const acset::ACSet*>> states = {
+        {"Pre", &rule.L}, {"Keep", &rule.K}, {"Eff", &rule.R}};
+    for (const auto& c : rule.conditions) {
+        states.emplace_back(c.name, &c.n_state);
+    }
+    for (const auto& [label, state] : states) {
+        out += indent(fmt::format("{}:\n", label), n + 2) + indent(acset::to_tables(*state), n + 4);
+    }
+    return out;
 }
 
 std::string_view kind_name(lang::DeclKind kind) {

@@ -79,6 +79,13 @@ std::string declared_names(const lang::Module& m);
 /// "a schema", "an instance", ... for messages.
 std::string_view kind_name(lang::DeclKind kind);
 
+/// Every line of text indented by n spaces.
+std::string indent(const std::string& text, std::size_t n);
+
+/// The rule's summary line, then its Pre, Keep, Eff and each condition's N as tables, all
+/// indented by n spaces (`show` of a rule or domain, `migrate-domain`).
+std::string rule_tables(const rewrite::Rule& rule, std::size_t n);
+
 /// The declaration `name` of the wanted kind, or nullptr with an error message on err.
 const lang::Declaration* find_declaration(const lang::Module& m, const std::string& file,
                                           const std::string& name,

@@ -112,6 +112,22 @@ int cmd_show(const std::string& file, const std::string& name, bool json, std::o
         out << schema::describe(*d->schema);
     } else if (d->kind == lang::DeclKind::Map) {
         out << lang::summarize(*d) << "\n" << migrate::map_text(migrate::describe_map(*d->map));
+    } else if (d->kind == lang::DeclKind::Rule) {
+        out << rule_tables(*d->rule, 0);
+    } else if (d->kind == lang::DeclKind::Domain) {
+        out << lang::summarize(*d) << "\n";
+        for (const auto& r : d->domain->rules) {
+            out << rule_tables(*r, 2);
+        }
+    } else if (d->kind == lang::DeclKind::Problem) {
+        out << lang::summarize(*d) << "\n";
+        out << "  initial:\n" << indent(acset::to_tables(*d->problem->initial), 4);
+        out << "  goal:\n" << indent(acset::to_tables(*d->problem->goal), 4);
+        for (const auto& c : d->problem->goal_conditions) {
+            out << fmt::format("  goal condition {} (the goal holds where it {}):\n", c.name,
+                               c.negative ? "does not extend to" : "extends to")
+                << indent(acset::to_tables(c.n_state), 4);
+        }
     } else if (d->kind != lang::DeclKind::Instance) {
         out << lang::summarize(*d) << "\n";
     } else {
@@ -241,9 +257,12 @@ void add_inspect_commands(CLI::App& app, CommandTable& table) {
     check->add_option("FILE", args->check_files, "language files (.cp)")->required();
     add_format_option(check, args->check_format);
 
-    auto* show = app.add_subcommand("show", "Print a state as tables or a schema as lists");
+    auto* show = app.add_subcommand("show", "Print a declaration: a schema as lists, a state or "
+                                            "the states of a rule, domain or problem as tables");
     show->add_option("FILE", args->show_file)->required();
-    show->add_option("NAME", args->show_name, "a schema or instance declared in FILE")->required();
+    show->add_option("NAME", args->show_name,
+                     "a declaration of FILE: schema, instance, rule, domain, problem or map")
+        ->required();
     add_format_option(show, args->show_format);
 
     auto* homs = app.add_subcommand("homs", "Find homomorphisms between two instances "

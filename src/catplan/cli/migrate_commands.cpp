@@ -93,19 +93,6 @@ struct MigrateDomainArgs {
     std::string file, map, domain, format = "text";
 };
 
-// Every line of text indented by n spaces.
-std::string indent(const std::string& text, std::size_t n) {
-    std::string out, pad(n, ' ');
-    std::size_t start = 0;
-    while (start < text.size()) {
-        std::size_t end = text.find('\n', start);
-        end = end == std::string::npos ? text.size() : end + 1;
-        out += pad + text.substr(start, end - start);
-        start = end;
-    }
-    return out;
-}
-
 int cmd_migrate_domain(const MigrateDomainArgs& a, std::ostream& out, std::ostream& err) {
     Session s;
     auto m = load(s, a.file, err);
@@ -148,11 +135,7 @@ int cmd_migrate_domain(const MigrateDomainArgs& a, std::ostream& out, std::ostre
         if (json) {
             continue;
         }
-        out << "  " << lang::summarize_rule(*migrated) << "\n";
-        for (auto [label, state] : {std::pair{"Pre", &migrated->L}, std::pair{"Keep", &migrated->K},
-                                    std::pair{"Eff", &migrated->R}}) {
-            out << fmt::format("    {}:\n{}", label, indent(acset::to_tables(*state), 6));
-        }
+        out << rule_tables(*migrated, 2);
     }
     out << (json ? json_text(doc) : "");
     return rc;

@@ -1,0 +1,1 @@
+plan tests/cli/data/letting_go.cp --problem Free --no-timing
