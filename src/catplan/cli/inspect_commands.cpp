@@ -57,6 +57,16 @@ int cmd_check(const std::vector<std::string>& files, bool json, std::ostream& ou
 
 // ---- show -----------------------------------------------------------------------------------
 
+// Application conditions (of a rule) or goal conditions (of a problem): name, whether negative,
+// and the state N.
+nlohmann::ordered_json conditions_json(const std::vector<rewrite::ApplicationCondition>& cs) {
+    nlohmann::ordered_json out = nlohmann::ordered_json::array();
+    for (const auto& c : cs) {
+        out.push_back({{"name", c.name}, {"negative", c.negative}, {"N", acset_value(c.n_state)}});
+    }
+    return out;
+}
+
 // The declaration as JSON: its kind, name and summary, and what it holds (docs/json-output.md).
 nlohmann::ordered_json show_json(const lang::Declaration& d) {
     nlohmann::ordered_json j = declaration_json(d);
@@ -70,9 +80,10 @@ nlohmann::ordered_json show_json(const lang::Declaration& d) {
         break;
     case lang::DeclKind::Rule:
         j["schema"] = d.schema->name();
-        j["L"] = acset_value(d.rule->L);
-        j["K"] = acset_value(d.rule->K);
-        j["R"] = acset_value(d.rule->R);
+        j["Pre"] = acset_value(d.rule->L);
+        j["Keep"] = acset_value(d.rule->K);
+        j["Eff"] = acset_value(d.rule->R);
+        j["conditions"] = conditions_json(d.rule->conditions);
         break;
     case lang::DeclKind::Domain:
         j["schema"] = d.schema->name();
@@ -85,6 +96,7 @@ nlohmann::ordered_json show_json(const lang::Declaration& d) {
         j["domain"] = d.problem->domain->name;
         j["initial"] = acset_value(*d.problem->initial);
         j["goal"] = acset_value(*d.problem->goal);
+        j["goal_conditions"] = conditions_json(d.problem->goal_conditions);
         break;
     case lang::DeclKind::Map:
         j["target"] = d.map->target()->name();

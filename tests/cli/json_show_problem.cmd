@@ -1,0 +1,1 @@
+show tests/cli/data/letting_go.cp Free --format json

@@ -1,0 +1,1 @@
+show tests/cli/data/int_overflow.cp inc --format json
