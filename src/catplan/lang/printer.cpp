@@ -192,23 +192,27 @@ std::string print_schema(const Schema& s) {
 
 namespace detail {
 
+std::string NamePool::take(std::string_view wanted, std::string_view kind, std::uint32_t index) {
+    std::string n(wanted);
+    // A name that is not an identifier is written quoted (var"on-table"); one with a line break
+    // in it could not be.
+    if (n.empty() || n.find_first_of("\n\r") != std::string::npos || used(n)) {
+        n = generated_name(wanted, kind, index);
+        while (used(n)) {
+            n += "_";
+        }
+    }
+    add(n);
+    return n;
+}
+
 StateNames state_names(const ACSet& x, std::span<const ObId> name_first) {
     const Schema& s = x.schema();
     // Every part and variable becomes a generator; the names must be distinct identifiers that
     // do not shadow each other, so others get generated names.
-    std::set<std::string> used;
+    NamePool pool;
     auto pick = [&](std::string_view wanted, std::string_view kind, std::uint32_t index) {
-        std::string n(wanted);
-        // A name that is not an identifier is written quoted (var"on-table"); one with a line
-        // break in it could not be.
-        if (n.empty() || n.find_first_of("\n\r") != std::string::npos || used.count(n)) {
-            n = generated_name(wanted, kind, index);
-            while (used.count(n)) {
-                n += "_";
-            }
-        }
-        used.insert(n);
-        return n;
+        return pool.take(wanted, kind, index);
     };
     std::vector<ObId> order(name_first.begin(), name_first.end());
     for (std::uint32_t o = 0; o < s.num_obs(); ++o) {

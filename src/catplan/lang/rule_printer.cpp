@@ -83,33 +83,9 @@ using rewrite::Rule;
 using schema::Schema;
 
 using detail::BlockView;
+using detail::NamePool;
 using detail::PartNames;
 using detail::preimages;
-
-// The generator names of one rule: distinct across its states, so that no block's name can
-// stand for a part of another block by accident.
-class NamePool {
-public:
-    bool used(const std::string& n) const { return used_.count(n) != 0; }
-
-    void add(const std::string& n) { used_.insert(n); }
-
-    // `wanted` when it is free and can be written, else a generated name made free.
-    std::string take(std::string_view wanted, const Schema& s, ObId ob, Part p) {
-        std::string n(wanted);
-        if (n.empty() || n.find_first_of("\n\r") != std::string::npos || used(n)) {
-            n = generated_name(wanted, s.ob(ob).name, p);
-            while (used(n)) {
-                n += "_";
-            }
-        }
-        add(n);
-        return n;
-    }
-
-private:
-    std::set<std::string> used_;
-};
 
 // L's names: the parameters first (the header names them), then the parts' own names.
 Result<PartNames> l_names(const Rule& rule, NamePool& pool) {
@@ -132,7 +108,7 @@ Result<PartNames> l_names(const Rule& rule, NamePool& pool) {
     for (std::uint32_t o = 0; o < names.size(); ++o) {
         for (Part p = 0; p < names[o].size(); ++p) {
             if (names[o][p].empty()) {
-                names[o][p] = pool.take(L.part_name(ObId(o), p), L.schema(), ObId(o), p);
+                names[o][p] = pool.take(L.part_name(ObId(o), p), L.schema().ob(ObId(o)).name, p);
             }
         }
     }
@@ -156,7 +132,7 @@ Result<PartNames> names_along(const ACSetMorphism& f, const ACSet& x, const Part
         }
         for (Part p = 0; p < names[o].size(); ++p) {
             if (names[o][p].empty()) {
-                names[o][p] = pool.take(y.part_name(ObId(o), p), s, ObId(o), p);
+                names[o][p] = pool.take(y.part_name(ObId(o), p), s.ob(ObId(o)).name, p);
             }
         }
     }

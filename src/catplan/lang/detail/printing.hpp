@@ -6,6 +6,7 @@
 #include "catplan/acset/acset.hpp"
 #include "catplan/hom/morphism.hpp"
 
+#include <set>
 #include <span>
 #include <string>
 #include <string_view>
@@ -15,6 +16,21 @@ namespace catplan::lang::detail {
 
 /// Per object, per part: a generator name (unquoted).
 using PartNames = std::vector<std::vector<std::string>>;
+
+/// Generator names that must be distinct: those of one printed state, or of all the states of
+/// one rule (so that no block's name stands for a part of another by accident).
+class NamePool {
+public:
+    bool used(const std::string& n) const { return used_.count(n) != 0; }
+
+    void add(const std::string& n) { used_.insert(n); }
+
+    /// `wanted` when it is free and can be written, else generated_name's, made free.
+    std::string take(std::string_view wanted, std::string_view kind, std::uint32_t index);
+
+private:
+    std::set<std::string> used_;
+};
 
 /// The names print_instance gives x's parts and variables: their own where distinct and writable
 /// (the parts of `name_first` choose first), else generated_name's.
