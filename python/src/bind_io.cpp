@@ -4,6 +4,7 @@
 #include "catplan/pddl/export.hpp"
 #include "catplan/pddl/import.hpp"
 #include "catplan/pddl/ipc_plan.hpp"
+#include "catplan/plan/actions.hpp"
 
 #include "common.hpp"
 
@@ -137,6 +138,9 @@ PyIpcValidation validate_ipc(const PyPddl& t, const py::handle& plan) {
 
 std::string to_ipc(const PyPddl& t, const py::handle& plan) {
     auto p = plan_arg(plan);
+    if (t.im->problem != nullptr) { // steps of actions (catplan.plan's) as the rules carrying them
+        p = plan::rule_plan(*t.im->domain, *t.im->problem->initial, p);
+    }
     return pddl::write_ipc_plan(value_or_raise(pddl::to_ipc_plan(*t.im, p)));
 }
 
@@ -179,7 +183,7 @@ and written back.)doc")
              "Replays an IPC plan (its text, or a list of (action, [args]) tuples) with PDDL's "
              "meaning; the reason of an invalid plan names the false precondition.")
         .def("to_ipc", &to_ipc, py::arg("plan"),
-             "A plan on the imported rules (such as catplan.plan finds) as IPC plan text.")
+             "A plan on the imported domain (such as catplan.plan finds) as IPC plan text.")
         .def("__repr__", [](const PyPddl& t) {
             return "<PddlTask " + t.im->pddl_domain.name +
                    (t.im->pddl_problem ? " / " + t.im->pddl_problem->name : std::string()) + ">";

@@ -1,5 +1,6 @@
 // Plans, plan validation and the planner: catplan.Step, Plan, validate, plan.
 
+#include "catplan/plan/actions.hpp"
 #include "catplan/plan/validate.hpp"
 
 #include "common.hpp"
@@ -72,6 +73,8 @@ PyValidation validate(PyProblem& problem, const py::handle& plan_obj, bool keep_
     plan::Validation v;
     {
         py::gil_scoped_release release;
+        // Steps of actions as the rules that carry them out (plan/actions.hpp).
+        plan = plan::rule_plan(*problem.ptr->domain, *problem.ptr->initial, plan);
         plan::ValidateOptions o;
         o.keep_states = keep_states;
         v = plan::validate_plan(*problem.ptr, plan, o);
@@ -118,6 +121,9 @@ PySearchResult find_plan(PyProblem& problem, const SearchArgs& args) {
         auto o = search_options(args, inter);
         try {
             r = plan::find_plan(*problem.ptr, o);
+            if (r.plan) {
+                r.plan = plan::action_plan(*problem.ptr->domain, *r.plan);
+            }
         } catch (const Interrupted&) {
         }
         inter.finish();

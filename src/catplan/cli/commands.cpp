@@ -14,6 +14,7 @@
 #include "catplan/json/json.hpp"
 #include "catplan/lang/module.hpp"
 #include "catplan/migrate/describe.hpp"
+#include "catplan/plan/actions.hpp"
 #include "catplan/plan/search.hpp"
 #include "catplan/plan/validate.hpp"
 #include "catplan/schema/printer.hpp"
@@ -177,7 +178,7 @@ int cmd_validate(const ValidateArgs& a, std::ostream& out, std::ostream& err) {
     for (std::size_t i = 0; i < v.matches.size(); ++i) {
         const auto& step = plan->steps[i];
         const auto* rule = problem->domain->find_rule(step.action);
-        out << fmt::format("{}. {}\n", i + 1, step.to_string());
+        out << fmt::format("{}. {}\n", i + 1, plan::action_step(*rule, step).to_string());
         out << fmt::format("   match: {}\n",
                            plan::describe_match(v.matches[i], rule->L, v.states[i]));
         if (a.trace) {
@@ -352,6 +353,9 @@ int cmd_plan(const PlanArgs& a, std::ostream& out, std::ostream& err) {
         return input_error(s);
     }
     auto r = plan::find_plan(*problem, options);
+    if (r.plan) {
+        r.plan = plan::action_plan(*problem->domain, *r.plan); // as the user writes them
+    }
     int rc = plan_exit_code(r.status);
     std::string text = r.plan ? r.plan->to_string() : "";
     if (r.plan && !a.output.empty() && a.output != "-") {

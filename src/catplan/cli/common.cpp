@@ -5,6 +5,7 @@
 #include "catplan/cli/commands.hpp"
 #include "catplan/cli/options.hpp"
 #include "catplan/cli/pddl_transfer.hpp"
+#include "catplan/plan/actions.hpp"
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
@@ -61,7 +62,7 @@ std::optional<plan::Plan> load_plan(Session& s, const std::string& path,
     if (report(s, err) || !plan) {
         return std::nullopt;
     }
-    return plan;
+    return plan::rule_plan(*problem.domain, *problem.initial, *plan);
 }
 
 void error(std::ostream& err, const std::string& message) {

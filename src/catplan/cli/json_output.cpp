@@ -3,6 +3,7 @@
 #include "catplan/base/assert.hpp"
 #include "catplan/cli/common.hpp"
 #include "catplan/json/json.hpp"
+#include "catplan/plan/actions.hpp"
 
 namespace catplan::cli {
 
@@ -85,8 +86,12 @@ nlohmann::ordered_json validated_steps_json(const plan::Problem& problem,
     for (std::size_t i = 0; i < v.matches.size() && i + 1 <= v.states.size(); ++i) {
         const auto* rule = problem.domain->find_rule(steps[i].action);
         CATPLAN_ASSERT(rule != nullptr, "a step that applied names a rule of the domain");
-        out.push_back(step_json(steps[i].action, steps[i].args,
-                                morphism_json(v.matches[i], rule->L, v.states[i])));
+        plan::Step a = plan::action_step(*rule, steps[i]);
+        auto step = step_json(a.action, a.args, morphism_json(v.matches[i], rule->L, v.states[i]));
+        if (a.action != rule->name || a.args != steps[i].args) {
+            step["rule"] = steps[i].to_string();
+        }
+        out.push_back(std::move(step));
     }
     return out;
 }

@@ -139,7 +139,8 @@ std::string import_text(const pddl::Import& im, const std::string& domain_file) 
            "# (src/catplan/pddl/import.hpp)";
     for (const auto& a : im.actions) {
         if (a.variants.size() > 1) {
-            out += fmt::format(": `{}` is the second rule of the action `{}`",
+            out += fmt::format(": `{}` is the second rule of the action `{}`,\n# as its "
+                               "`action = ...` says, and plans name the action",
                                a.variants[1].rule->name, a.action);
             break;
         }

@@ -12,6 +12,7 @@
 #include "catplan/json/json.hpp"
 #include "catplan/lang/module.hpp"
 #include "catplan/migrate/describe.hpp"
+#include "catplan/plan/actions.hpp"
 #include "catplan/transfer/transfer.hpp"
 
 #include <CLI/CLI.hpp>
@@ -181,8 +182,10 @@ std::string text_report(const TransferCommandArgs& a, const TransferInputs& in, 
                          ? "valid"
                          : "invalid: " + v.find(transfer::Fault::Kind::SourcePlan)->to_string());
     for (std::size_t i = 0; i < in.plan.steps.size(); ++i) {
-        o += fmt::format("  {}. {}\n", i + 1,
-                         in.pddl ? in.pddl->plan[i].to_string() : in.plan.steps[i].to_string());
+        o += fmt::format(
+            "  {}. {}\n", i + 1,
+            in.pddl ? in.pddl->plan[i].to_string()
+                    : plan::action_step(*in.problem->domain, in.plan.steps[i]).to_string());
     }
     o += fmt::format("target plan ({}):\n", step_count(transfer::target_plan(t.steps).size()));
     if (in.pddl) {
@@ -204,8 +207,9 @@ std::string text_report(const TransferCommandArgs& a, const TransferInputs& in, 
         }
     }
     if (const auto* failed = v.failed_step()) {
-        o += fmt::format("  {}. {}: not transferred\n", *failed->step + 1,
-                         in.plan.steps[*failed->step].to_string());
+        o += fmt::format(
+            "  {}. {}: not transferred\n", *failed->step + 1,
+            plan::action_step(*in.problem->domain, in.plan.steps[*failed->step]).to_string());
     }
     o += construction_line(v);
     for (const auto& d : v.divergences) {
@@ -287,7 +291,7 @@ nlohmann::ordered_json json_report(const TransferCommandArgs& a, const TransferI
         }
         j["diverged_steps"] = all;
     }
-    j["source_plan"] = plan_strings(in.plan.steps);
+    j["source_plan"] = plan_strings(plan::action_plan(*in.problem->domain, in.plan).steps);
     j["source_valid"] = v.source_valid();
     j["target_plan"] = plan_strings(target_steps(t));
     j["steps"] = steps_json(in, t);

@@ -7,6 +7,7 @@
 #include "catplan/db/library.hpp"
 #include "catplan/json/json.hpp"
 #include "catplan/lang/module.hpp"
+#include "catplan/plan/actions.hpp"
 #include "catplan/transfer/transfer.hpp"
 
 #include <chrono>
@@ -89,7 +90,9 @@ StoredTransfer run(const Worker& w, const Job& j, const std::string& map) {
     if (!plan) {
         return failed_job(j, map, "the stored plan: " + sink.render());
     }
-    transfer::TransferResult r = transfer::transfer_plan(f, p, *plan);
+    // A stored plan names actions as the user wrote them; the transfer reads rule steps.
+    transfer::TransferResult r =
+        transfer::transfer_plan(f, p, plan::rule_plan(*p.domain, *p.initial, *plan));
     const transfer::Verdict& v = r.verdict;
     StoredTransfer t = failed_job(j, map, v.reason());
     t.migration = std::string(transfer::to_string(r.migration));

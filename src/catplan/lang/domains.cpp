@@ -128,6 +128,25 @@ bool domain_facts(Elaborator& ctx, const Expr& st, const schema::Schema& s,
     return ok;
 }
 
+// The rules of one action (rewrite::ActionOf) take as many arguments, so that a step of the
+// action reads the same whichever rule carries it out.
+void check_action(const rewrite::Rule& rule, SourceRange at, const plan::Domain& domain,
+                  DiagnosticSink& sink) {
+    for (const auto& other : domain.rules) {
+        if (other->action_name() == rule.action_name() &&
+            other->action_arity() != rule.action_arity()) {
+            auto& d = sink.error(
+                at, fmt::format(
+                        "rule '{}' carries out the action '{}' with {} argument{}, but rule "
+                        "'{}' does with {}",
+                        rule.name, rule.action_name(), rule.action_arity(),
+                        rule.action_arity() == 1 ? "" : "s", other->name, other->action_arity()));
+            d.notes.emplace_back(other->range, "that rule is here");
+            return;
+        }
+    }
+}
+
 // `initial = I` or `goal = G` of a problem on domain dd into its slot; false after an error.
 bool problem_instance(Elaborator& ctx, const Expr& st, const Declaration& dd,
                       const std::string& dname, std::shared_ptr<const ACSet>* slots[2],
@@ -270,6 +289,7 @@ void elaborate_domain(Elaborator& ctx, const MacroCall& form, bool imported) {
             d.notes.emplace_back(it->second, "first given here");
             continue;
         }
+        check_action(*rule, at, *domain, sink);
         domain->rules.push_back(std::move(rule));
     }
     if (sink.num_errors() != errors || !ctx.claim_name(domain->name, domain->range)) {

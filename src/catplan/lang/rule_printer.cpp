@@ -183,6 +183,28 @@ std::string unwritable(const Rule& rule) {
     return "";
 }
 
+// `action = stack(x, x)`, unless the action is the rule itself.
+std::string action_statement(const Rule& rule) {
+    if (!rule.action) {
+        return "";
+    }
+    std::vector<std::string> args;
+    bool itself = rule.action->name == rule.name;
+    for (std::size_t i = 0; i < rule.action->arguments.size(); ++i) {
+        const auto& a = rule.action->arguments[i];
+        itself = itself && a.parameter == static_cast<int>(i);
+        args.push_back(
+            a.parameter < 0
+                ? acset::Value::string(a.constant).to_string()
+                : quoted_name(rule.parameters[static_cast<std::size_t>(a.parameter)].name));
+    }
+    if (itself && args.size() == rule.parameters.size()) {
+        return "";
+    }
+    return fmt::format("    action = {}({})\n", quoted_name(rule.action->name),
+                       fmt::join(args, ", "));
+}
+
 } // namespace
 
 Result<std::string> print_rule(const Rule& rule) {
@@ -214,6 +236,7 @@ Result<std::string> print_rule(const Rule& rule) {
     if (rule.cost) {
         out += fmt::format("    cost = {}\n", rule.cost->constant);
     }
+    out += action_statement(rule);
     out += block("Pre", BlockView{&rule.L, &*ln, nullptr, {}});
     out += block("Keep", BlockView{&rule.K, &kn, nullptr, {}});
     out += block("Eff", BlockView{&rule.R, &*rn, &rule.K, preimages(rule.r, rule.K, rule.R)});

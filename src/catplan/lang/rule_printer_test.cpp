@@ -40,8 +40,22 @@ std::vector<std::size_t> part_counts(const acset::ACSet& x) {
     return out;
 }
 
+// The arguments of the action a rule carries out (its parameters when it is the action itself).
+std::vector<rewrite::ActionOf::Argument> action_arguments(const rewrite::Rule& r) {
+    if (r.action) {
+        return r.action->arguments;
+    }
+    std::vector<rewrite::ActionOf::Argument> out;
+    for (std::size_t i = 0; i < r.parameters.size(); ++i) {
+        out.push_back({static_cast<int>(i), ""});
+    }
+    return out;
+}
+
 void expect_same_rule(const rewrite::Rule& a, const rewrite::Rule& b) {
     EXPECT_EQ(a.name, b.name);
+    EXPECT_EQ(a.action_name(), b.action_name());
+    EXPECT_EQ(action_arguments(a), action_arguments(b)) << a.name;
     ASSERT_EQ(a.parameters.size(), b.parameters.size()) << a.name;
     for (std::size_t i = 0; i < a.parameters.size(); ++i) {
         EXPECT_EQ(a.parameters[i].name, b.parameters[i].name) << a.name;

@@ -40,8 +40,23 @@ void rule_cost(const Expr& st, RuleSource& src, DiagnosticSink& sink) {
     }
 }
 
+// `action = stack(x, x)`: the action a step of the rule is a step of (rewrite::ActionOf); its
+// arguments are checked against the parameters once they are known.
+void rule_action(const Expr& st, RuleSource& src, DiagnosticSink& sink) {
+    const Expr& v = st.args[1];
+    if (src.action != nullptr) {
+        auto& d = sink.error(st.range, "the action is given twice");
+        d.notes.emplace_back(src.action->range, "first given here");
+    } else if (v.kind != Expr::Kind::Call && v.kind != Expr::Kind::Name) {
+        sink.error(v.range, fmt::format("expected the action as 'name(argument, ...)', found '{}'",
+                                        to_string(v)));
+    } else {
+        src.action = &st;
+    }
+}
+
 // The statements of `Pre => @join begin ... end` / `Pre => begin ... end` into src.blocks, and
-// the rule's `cost = N`.
+// the rule's `cost = N` and `action = a(x, y)`.
 void rule_blocks(const std::vector<Expr>& body, RuleSource& src, DiagnosticSink& sink) {
     static const std::vector<std::string> ours = {"Pre", "Keep", "Eff", "NAC", "PAC"};
     static const std::vector<std::string> span = {"L", "K", "R", "l", "r"};
@@ -50,6 +65,11 @@ void rule_blocks(const std::vector<Expr>& body, RuleSource& src, DiagnosticSink&
     for (const auto& st : body) {
         if (st.is_binary("=") && st.args[0].kind == Expr::Kind::Name && st.args[0].text == "cost") {
             rule_cost(st, src, sink);
+            continue;
+        }
+        if (st.is_binary("=") && st.args[0].kind == Expr::Kind::Name &&
+            st.args[0].text == "action") {
+            rule_action(st, src, sink);
             continue;
         }
         const std::vector<Expr>* stmts = nullptr;
@@ -258,6 +278,9 @@ public:
         if (src_.cost != nullptr) {
             rule->cost = rewrite::Cost{src_.cost->args[1].int_value, ""};
         }
+        if (src_.action != nullptr) {
+            action(*rule, src_.action->args[1]);
+        }
         effect_exprs(*rule);
         if (failed()) {
             return nullptr;
@@ -271,6 +294,38 @@ public:
 
 private:
     bool failed() const { return ctx_.sink.num_errors() != errors_; }
+
+    // The arguments of `action = a(x, "c")`: parameters of the rule (one may be given twice:
+    // the rule identifies those arguments) or part names in quotes; every parameter is given.
+    void action(rewrite::Rule& rule, const Expr& e) {
+        rewrite::ActionOf a{e.text, {}};
+        std::vector<bool> given(rule.parameters.size(), false);
+        for (const auto& arg : e.args) {
+            if (arg.kind == Expr::Kind::String) {
+                a.arguments.push_back({-1, arg.text});
+                continue;
+            }
+            auto p = std::find_if(rule.parameters.begin(), rule.parameters.end(),
+                                  [&](const auto& q) { return q.name == arg.text; });
+            if (arg.kind != Expr::Kind::Name || p == rule.parameters.end()) {
+                ctx_.sink.error(arg.range, fmt::format("expected a parameter of rule '{}' or a "
+                                                       "part name in quotes, found '{}'",
+                                                       rule.name, to_string(arg)));
+                continue;
+            }
+            auto i = static_cast<std::size_t>(p - rule.parameters.begin());
+            given[i] = true;
+            a.arguments.push_back({static_cast<int>(i), {}});
+        }
+        for (std::size_t i = 0; i < given.size(); ++i) {
+            if (!given[i]) {
+                ctx_.sink.error(e.range, fmt::format("the action does not give the parameter "
+                                                     "'{}' of rule '{}'",
+                                                     rule.parameters[i].name, rule.name));
+            }
+        }
+        rule.action = std::move(a);
+    }
 
     void sort_blocks() {
         for (const auto& b : src_.blocks) {

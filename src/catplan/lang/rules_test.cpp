@@ -5,7 +5,9 @@
 #include "catplan/acset/acset.hpp"
 #include "catplan/hom/hom_search.hpp"
 #include "catplan/lang/module.hpp"
+#include "catplan/plan/actions.hpp"
 #include "catplan/plan/domain.hpp"
+#include "catplan/plan/validate.hpp"
 #include "catplan/rewrite/dpo.hpp"
 
 #include <gtest/gtest.h>
@@ -536,6 +538,164 @@ end
               std::string::npos)
         << out;
     EXPECT_NE(out.find("test.cp:16:5: error: the cost is given twice"), std::string::npos) << out;
+}
+
+// Two rules carrying out one action (the domain of docs/language.md): `move(hall, hall)` is the
+// rule `stay`, which identifies the action's two arguments; `move(hall, kitchen)` is `move`.
+const char* kWalking = R"(
+@present Rooms(FreeSchema) begin
+  (Room, At)::Ob
+  at::Hom(At, Room)
+end
+@acset_colim Start(Rooms) begin
+  (hall, kitchen)::Room
+  a::At
+  at(a) == hall
+end
+@acset_colim There(Rooms) begin
+  kitchen::Room
+  a::At
+  at(a) == kitchen
+end
+@domain Walking(Rooms) begin
+  facts = At
+  @rule move(from, to) begin
+    Pre => begin
+      (from, to)::Room
+      here::At
+      at(here) == from
+    end
+    Keep => begin
+      (from, to)::Room
+    end
+    Eff => begin
+      there::At
+      at(there) == to
+    end
+  end
+  @rule stay(r) begin
+    action = move(r, r)
+    Pre => begin
+      r::Room
+      here::At
+      at(here) == r
+    end
+    Keep => begin
+      r::Room
+      here::At
+      at(here) == r
+    end
+    Eff => begin
+    end
+  end
+end
+@problem Go(Walking) begin
+  initial = Start
+  goal = There
+end
+)";
+
+plan::Plan parsed_plan(Loaded& l, const std::string& text) {
+    auto file = l.sources.add_buffer("test.plan", text);
+    auto p = plan::parse_plan(file, l.sources, l.sink);
+    EXPECT_TRUE(p.has_value()) << l.sink.render();
+    return p ? *p : plan::Plan{};
+}
+
+TEST(Rules, AStepOfAnActionIsTheRuleOfItThatApplies) {
+    auto l = load_text(kWalking);
+    ASSERT_FALSE(l->sink.has_errors()) << l->sink.render();
+    const auto& problem = *l->module.find("Go")->problem;
+    const auto& domain = *problem.domain;
+    const auto& stay = *domain.find_rule("stay");
+    ASSERT_TRUE(stay.action.has_value());
+    EXPECT_EQ(stay.action_name(), "move");
+    EXPECT_EQ(stay.action->arguments, (std::vector<rewrite::ActionOf::Argument>{{0, ""}, {0, ""}}));
+    EXPECT_EQ(plan::action_rules(domain, "move").size(), 2u);
+    EXPECT_TRUE(plan::action_rules(domain, "stay").empty());
+
+    auto written = parsed_plan(*l, "move(hall, hall)\nmove(hall, kitchen)\n");
+    ASSERT_TRUE(plan::check_plan(written, domain, *problem.initial, l->sink)) << l->sink.render();
+    auto rules = plan::rule_plan(domain, *problem.initial, written);
+    ASSERT_EQ(rules.steps.size(), 2u);
+    EXPECT_EQ(rules.steps[0].to_string(), "stay(hall)");
+    EXPECT_EQ(rules.steps[1].to_string(), "move(hall, kitchen)");
+    auto v = plan::validate_plan(problem, rules);
+    EXPECT_TRUE(v.valid) << v.reason;
+    EXPECT_EQ(plan::action_plan(domain, rules).to_string(), written.to_string());
+
+    // Arguments that fit no rule, or no rule that applies, fail where the written plan does.
+    auto wrong = parsed_plan(*l, "move(kitchen, kitchen)\nmove(hall, kitchen)\n");
+    auto unapplied = plan::rule_plan(domain, *problem.initial, wrong);
+    EXPECT_EQ(unapplied.steps[0].to_string(), "move(kitchen, kitchen)");
+    auto failed = plan::validate_plan(problem, unapplied);
+    EXPECT_FALSE(failed.valid);
+    EXPECT_EQ(failed.failed_step, std::optional<std::size_t>(0));
+    // A plan naming the rule itself still reads.
+    auto by_rule = parsed_plan(*l, "stay(hall)\n");
+    EXPECT_TRUE(plan::check_plan(by_rule, domain, *problem.initial, l->sink)) << l->sink.render();
+    EXPECT_EQ(plan::rule_plan(domain, *problem.initial, by_rule).steps[0].to_string(),
+              "stay(hall)");
+}
+
+TEST(Rules, BadActionsAndActionStepsAreLocated) {
+    auto l = load_text(R"(
+@present S(FreeSchema) begin
+  Thing::Ob
+end
+@domain D(S) begin
+  @rule a(x, y) begin
+    action = go(x, y, "c")
+    Pre => begin
+      (x, y)::Thing
+    end
+  end
+  @rule b(x) begin
+    action = go(x, x)
+    Pre => begin
+      x::Thing
+    end
+  end
+  @rule c(x, y) begin
+    action = go(x, z, "c")
+    action = go(x)
+    Pre => begin
+      (x, y)::Thing
+    end
+  end
+end
+)");
+    std::string out = l->sink.render();
+    EXPECT_NE(out.find("test.cp:12:9: error: rule 'b' carries out the action 'go' with 2 "
+                       "arguments, but rule 'a' does with 3"),
+              std::string::npos)
+        << out;
+    EXPECT_NE(out.find("test.cp:19:20: error: expected a parameter of rule 'c' or a part name in "
+                       "quotes, found 'z'"),
+              std::string::npos)
+        << out;
+    EXPECT_NE(out.find("test.cp:20:5: error: the action is given twice"), std::string::npos) << out;
+    EXPECT_NE(out.find("test.cp:19:14: error: the action does not give the parameter 'y' of "
+                       "rule 'c'"),
+              std::string::npos)
+        << out;
+
+    auto w = load_text(kWalking);
+    ASSERT_FALSE(w->sink.has_errors()) << w->sink.render();
+    const auto& problem = *w->module.find("Go")->problem;
+    auto p = parsed_plan(*w, "move(hall)\nstay(hall, hall)\nwalk(hall)\nmove(hall, cellar)\n");
+    EXPECT_FALSE(plan::check_plan(p, *problem.domain, *problem.initial, w->sink));
+    out = w->sink.render();
+    EXPECT_NE(out.find("test.plan:1:1: error: move takes 2 arguments, got 1"), std::string::npos)
+        << out;
+    EXPECT_NE(out.find("test.plan:2:1: error: stay takes 1 argument (r), got 2"), std::string::npos)
+        << out;
+    EXPECT_NE(out.find("test.plan:3:1: error: unknown action 'walk' (domain Walking has: move)"),
+              std::string::npos)
+        << out;
+    EXPECT_NE(out.find("test.plan:4:12: error: argument 2 (to): no Room named 'cellar'"),
+              std::string::npos)
+        << out;
 }
 
 } // namespace

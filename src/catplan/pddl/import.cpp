@@ -297,13 +297,12 @@ private:
             cost.depends_on = fmt::format("{}", fmt::join(fluents, " + "));
             rule->cost = std::move(cost);
         }
-        Variant out;
+        rewrite::ActionOf action{a_.name, {}};
         std::vector<int> param_index(id.blocks, -1);
         for (std::size_t i = 0; i < a_.params.size(); ++i) {
             std::size_t b = id.block[i];
             if (reps[b].constant) {
-                out.param_of.push_back(-1);
-                out.constant_of.push_back(reps[b].name);
+                action.arguments.push_back({-1, reps[b].name});
                 continue;
             }
             if (param_index[b] < 0) {
@@ -311,11 +310,10 @@ private:
                 ObId ob = im_.type_ob.at(reps[b].type);
                 rule->parameters.push_back({reps[b].name, ob, ents[b].at(reps[b].type)});
             }
-            out.param_of.push_back(param_index[b]);
-            out.constant_of.emplace_back();
+            action.arguments.push_back({param_index[b], {}});
         }
-        out.rule = std::move(rule);
-        return out;
+        rule->action = std::move(action);
+        return Variant{std::move(rule)};
     }
 
     const Import& im_;

@@ -58,13 +58,10 @@
 
 namespace catplan::pddl {
 
-/// One rule made from a PDDL action, and how the action's parameters reach the rule's.
+/// One rule made from a PDDL action; its rewrite::ActionOf says how the action's parameters
+/// reach the rule's (a parameter identified with a constant is that constant's name).
 struct Variant {
     rewrite::RulePtr rule;
-    /// Per PDDL parameter: the index of the rule parameter it binds, or -1 when the variant
-    /// identifies it with a constant (then `constant_of` names it).
-    std::vector<int> param_of;
-    std::vector<std::string> constant_of;
 };
 
 struct ActionVariants {

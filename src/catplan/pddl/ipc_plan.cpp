@@ -3,6 +3,7 @@
 #include "catplan/base/unicode.hpp"
 #include "catplan/pddl/costs.hpp"
 #include "catplan/pddl/steps.hpp"
+#include "catplan/plan/actions.hpp"
 #include "catplan/plan/validate.hpp"
 #include "catplan/rewrite/dpo.hpp"
 
@@ -442,14 +443,13 @@ Result<IpcPlan> to_ipc_plan(const Import& import, const plan::Plan& plan) {
         if (!found) {
             return fail(fmt::format("'{}' is not a rule of the imported domain", step.action));
         }
-        const Variant& v = *found->second;
-        IpcStep s{found->first->action, {}, {}};
-        for (std::size_t i = 0; i < v.param_of.size(); ++i) {
-            s.args.push_back(v.param_of[i] < 0
-                                 ? v.constant_of[i]
-                                 : step.args[static_cast<std::size_t>(v.param_of[i])]);
+        const rewrite::Rule& rule = *found->second->rule;
+        if (rule.parameters.size() != step.args.size()) {
+            return fail(fmt::format("rule '{}' takes {} arguments, got {}", rule.name,
+                                    rule.parameters.size(), step.args.size()));
         }
-        out.push_back(std::move(s));
+        plan::Step a = plan::action_step(rule, step);
+        out.push_back(IpcStep{std::move(a.action), std::move(a.args), {}});
     }
     return out;
 }
@@ -462,31 +462,31 @@ IpcValidation validate_ipc_plan(const Import& im, const IpcPlan& plan) {
     CATPLAN_ASSERT(im.problem != nullptr, "validation needs an imported problem");
     acset::ACSet x = *im.problem->initial;
     plan::Plan rules;
-    auto v =
-        replay_ipc_plan(im.pddl_domain, *im.pddl_problem, plan,
-                        [&](std::size_t, const IpcStep& s) -> std::optional<std::string> {
-                            const ActionVariants* av = im.find_action(s.action);
-                            CATPLAN_ASSERT(av != nullptr, "every action of the domain is imported");
-                            std::string last = "no rule variant fits the arguments";
-                            for (const auto& var : av->variants) {
-                                auto step = variant_step(var, s);
-                                if (!step) {
-                                    continue;
-                                }
-                                auto m = plan::resolve_step(*var.rule, x, *step);
-                                if (!m) {
-                                    last = m.error();
-                                    continue;
-                                }
-                                auto r = rewrite::rewrite_in_place(*var.rule, x, *m);
-                                CATPLAN_ASSERT(r.has_value(), "a resolved match applies");
-                                rules.steps.push_back(std::move(*step));
-                                return std::nullopt;
-                            }
-                            // The PDDL precondition holds, so some variant should have applied: a
-                            // bug.
-                            return fmt::format("internal error: no rule applies ({})", last);
-                        });
+    auto v = replay_ipc_plan(
+        im.pddl_domain, *im.pddl_problem, plan,
+        [&](std::size_t, const IpcStep& s) -> std::optional<std::string> {
+            const ActionVariants* av = im.find_action(s.action);
+            CATPLAN_ASSERT(av != nullptr, "every action of the domain is imported");
+            std::string last = "no rule variant fits the arguments";
+            for (const auto& var : av->variants) {
+                auto step = plan::rule_step(*var.rule, plan::Step{s.action, s.args, s.range});
+                if (!step) {
+                    continue;
+                }
+                auto m = plan::resolve_step(*var.rule, x, *step);
+                if (!m) {
+                    last = m.error();
+                    continue;
+                }
+                auto r = rewrite::rewrite_in_place(*var.rule, x, *m);
+                CATPLAN_ASSERT(r.has_value(), "a resolved match applies");
+                rules.steps.push_back(std::move(*step));
+                return std::nullopt;
+            }
+            // The PDDL precondition holds, so some variant should have applied: a
+            // bug.
+            return fmt::format("internal error: no rule applies ({})", last);
+        });
     v.plan = std::move(rules);
     v.final_state = std::move(x);
     return v;

@@ -1,7 +1,6 @@
 #include "catplan/pddl/steps.hpp"
 
-#include "catplan/plan/validate.hpp"
-#include "catplan/rewrite/dpo.hpp"
+#include "catplan/plan/actions.hpp"
 
 #include <algorithm>
 #include <fmt/format.h>
@@ -9,57 +8,12 @@
 
 namespace catplan::pddl {
 
-std::optional<plan::Step> variant_step(const Variant& v, const IpcStep& s) {
-    if (s.args.size() != v.param_of.size()) {
-        return std::nullopt;
-    }
-    plan::Step step{v.rule->name, std::vector<std::string>(v.rule->parameters.size()), s.range};
-    for (std::size_t i = 0; i < s.args.size(); ++i) {
-        if (v.param_of[i] < 0) {
-            if (s.args[i] != v.constant_of[i]) {
-                return std::nullopt;
-            }
-            continue;
-        }
-        auto& slot = step.args[static_cast<std::size_t>(v.param_of[i])];
-        if (!slot.empty() && slot != s.args[i]) {
-            return std::nullopt;
-        }
-        slot = s.args[i];
-    }
-    return step;
-}
-
 plan::Plan rule_plan(const Import& im, const IpcPlan& plan) {
-    plan::Plan out;
-    acset::ACSet x = *im.problem->initial;
-    bool replaying = true;
+    plan::Plan steps;
     for (const auto& s : plan) {
-        const ActionVariants* av = im.find_action(s.action);
-        std::optional<plan::Step> fits, applied;
-        for (std::size_t k = 0; av != nullptr && k < av->variants.size() && !applied; ++k) {
-            const auto& var = av->variants[k];
-            auto step = variant_step(var, s);
-            if (!step) {
-                continue;
-            }
-            if (!fits) {
-                fits = step;
-            }
-            auto m = replaying ? plan::resolve_step(*var.rule, x, *step)
-                               : Result<hom::ACSetMorphism>(fail(std::string("not replayed")));
-            if (m) {
-                auto r = rewrite::rewrite_in_place(*var.rule, x, *m);
-                CATPLAN_ASSERT(r.has_value(), "a resolved match applies");
-                applied = step;
-            }
-        }
-        replaying = replaying && applied.has_value();
-        out.steps.push_back(applied ? *applied
-                            : fits  ? *fits
-                                    : plan::Step{s.action, s.args, s.range});
+        steps.steps.push_back(plan::Step{s.action, s.args, s.range});
     }
-    return out;
+    return plan::rule_plan(*im.domain, *im.problem->initial, steps);
 }
 
 namespace {

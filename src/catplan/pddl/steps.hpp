@@ -15,13 +15,7 @@
 
 namespace catplan::pddl {
 
-/// The step of a variant's rule that an IPC step is, when its arguments fit the variant.
-std::optional<plan::Step> variant_step(const Variant& v, const IpcStep& s);
-
-/// The rule-level plan of an IPC plan: each step as the variant of its action that applies when
-/// the plan is replayed from the import's initial state; from the first step that does not apply
-/// on, the first variant its arguments fit (or the action's name), so that replaying the rule
-/// plan fails at the same step.
+/// The rule-level plan of an IPC plan (plan::rule_plan from the import's initial state).
 plan::Plan rule_plan(const Import& im, const IpcPlan& plan);
 
 /// A PDDL problem of the import's domain whose initial state is `initial` and whose goal is the

@@ -1,6 +1,7 @@
 #include "catplan/plan/domain.hpp"
 
 #include "catplan/base/unicode.hpp"
+#include "catplan/plan/actions.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -255,37 +256,96 @@ std::optional<std::string> argument_problem(const Domain& domain, const ACSet& i
 
 } // namespace
 
+namespace {
+
+/// The names of the domain's actions, each once.
+std::vector<std::string> action_names(const Domain& domain) {
+    std::vector<std::string> names;
+    for (const auto& rule : domain.rules) {
+        if (std::find(names.begin(), names.end(), rule->action_name()) == names.end()) {
+            names.push_back(rule->action_name());
+        }
+    }
+    return names;
+}
+
+/// What is wrong with the arguments of a step of rule r, located.
+std::vector<std::pair<SourceRange, std::string>>
+argument_problems(const Domain& domain, const ACSet& initial, const Rule& r, const Step& step) {
+    if (step.args.size() != r.parameters.size()) {
+        std::vector<std::string> names;
+        for (const auto& p : r.parameters) {
+            names.push_back(p.name);
+        }
+        return {{step.range, fmt::format("{} takes {} argument{} ({}), got {}", r.name,
+                                         r.parameters.size(), r.parameters.size() == 1 ? "" : "s",
+                                         fmt::join(names, ", "), step.args.size())}};
+    }
+    std::vector<std::pair<SourceRange, std::string>> out;
+    for (std::size_t i = 0; i < step.args.size(); ++i) {
+        if (auto why = argument_problem(domain, initial, r, step, i)) {
+            out.emplace_back(i < step.arg_ranges.size() ? step.arg_ranges[i] : step.range, *why);
+        }
+    }
+    return out;
+}
+
+/// What is wrong with a step of an action that is not one rule's own: the arguments must fit
+/// one of its rules and there name possible parts (the first rule they fit says what is wrong).
+std::vector<std::pair<SourceRange, std::string>>
+action_step_problems(const Domain& domain, const ACSet& initial,
+                     const std::vector<const Rule*>& rules, const Step& step) {
+    std::size_t arity = rules.front()->action_arity();
+    if (step.args.size() != arity) {
+        return {{step.range, fmt::format("{} takes {} argument{}, got {}", step.action, arity,
+                                         arity == 1 ? "" : "s", step.args.size())}};
+    }
+    std::optional<std::vector<std::pair<SourceRange, std::string>>> first;
+    for (const Rule* r : rules) {
+        if (auto s = rule_step(*r, step)) {
+            auto problems = argument_problems(domain, initial, *r, *s);
+            if (problems.empty()) {
+                return {};
+            }
+            if (!first) {
+                first = std::move(problems);
+            }
+        }
+    }
+    if (first) {
+        return *first;
+    }
+    return {{step.range, fmt::format("no rule of the action {} takes these arguments (the "
+                                     "action's rules identify some of them)",
+                                     step.action)}};
+}
+
+} // namespace
+
 bool check_plan(const Plan& plan, const Domain& domain, const ACSet& initial,
                 DiagnosticSink& sink) {
     std::size_t before = sink.num_errors();
     for (const auto& step : plan.steps) {
+        auto rules = action_rules(domain, step.action);
         const Rule* r = domain.find_rule(step.action);
-        SourceRange action{step.range.file, step.range.begin,
-                           step.range.begin + static_cast<std::uint32_t>(step.action.size())};
-        if (r == nullptr) {
-            std::vector<std::string> names;
-            for (const auto& rule : domain.rules) {
-                names.push_back(rule->name);
-            }
-            sink.error(action, fmt::format("unknown action '{}' (domain {} has: {})", step.action,
-                                           domain.name, fmt::join(names, ", ")));
-            continue;
+        bool fits = !rules.empty() && rules.front()->action_arity() == step.args.size();
+        std::vector<std::pair<SourceRange, std::string>> problems;
+        // A step names an action; failing that, a rule by its own name (`stack~2(b, a)`).
+        bool plain = rules.size() == 1 && !rules.front()->action;
+        bool by_rule = r != nullptr && (r->parameters.size() == step.args.size() || rules.empty());
+        if (plain || (!fits && by_rule)) {
+            problems = argument_problems(domain, initial, plain ? *rules.front() : *r, step);
+        } else if (!rules.empty()) {
+            problems = action_step_problems(domain, initial, rules, step);
+        } else {
+            SourceRange action{step.range.file, step.range.begin,
+                               step.range.begin + static_cast<std::uint32_t>(step.action.size())};
+            problems.emplace_back(action, fmt::format("unknown action '{}' (domain {} has: {})",
+                                                      step.action, domain.name,
+                                                      fmt::join(action_names(domain), ", ")));
         }
-        if (step.args.size() != r->parameters.size()) {
-            std::vector<std::string> names;
-            for (const auto& p : r->parameters) {
-                names.push_back(p.name);
-            }
-            sink.error(step.range,
-                       fmt::format("{} takes {} argument{} ({}), got {}", r->name,
-                                   r->parameters.size(), r->parameters.size() == 1 ? "" : "s",
-                                   fmt::join(names, ", "), step.args.size()));
-            continue;
-        }
-        for (std::size_t i = 0; i < step.args.size(); ++i) {
-            if (auto why = argument_problem(domain, initial, *r, step, i)) {
-                sink.error(i < step.arg_ranges.size() ? step.arg_ranges[i] : step.range, *why);
-            }
+        for (const auto& [range, message] : problems) {
+            sink.error(range, message);
         }
     }
     return sink.num_errors() == before;

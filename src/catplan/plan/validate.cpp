@@ -1,5 +1,6 @@
 #include "catplan/plan/validate.hpp"
 
+#include "catplan/plan/actions.hpp"
 #include "catplan/rewrite/dpo.hpp"
 
 #include <algorithm>
@@ -428,7 +429,7 @@ Validation validate_plan(const Problem& problem, const Plan& plan, const Validat
     }
     for (std::size_t i = 0; i < plan.steps.size(); ++i) {
         const Step& step = plan.steps[i];
-        auto prefix = fmt::format("step {} {}", i + 1, step.to_string());
+        auto prefix = fmt::format("step {} {}", i + 1, describe_step(*problem.domain, step));
         const Rule* rule = problem.domain->find_rule(step.action);
         if (rule == nullptr) {
             std::vector<std::string> names;

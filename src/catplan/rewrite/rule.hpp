@@ -105,6 +105,22 @@ struct Cost {
     std::string depends_on;
 };
 
+/// The action a rule carries out when one action has several rules (a PDDL action's variants,
+/// one per identification of its parameters): a step `stack(b, a)` of the action is a step of
+/// the rule whose arguments it fits.
+struct ActionOf {
+    /// One argument of the action: a parameter of the rule, or a part name it must be.
+    struct Argument {
+        int parameter = -1;   // index into Rule::parameters; -1 for a constant
+        std::string constant; // the part name, when parameter < 0
+        friend bool operator==(const Argument&, const Argument&) = default;
+    };
+
+    std::string name;
+    std::vector<Argument> arguments;
+    friend bool operator==(const ActionOf&, const ActionOf&) = default;
+};
+
 /// How a rule treats parts of X that refer to a part it deletes. DPO: the match is rejected (the
 /// dangling condition). SPO (single pushout, reference §4.5): they are deleted too, and so on
 /// transitively (dangling edges are removed); a match whose cascade would reach a kept part is
@@ -133,9 +149,20 @@ struct Rule {
     /// What a step of the rule costs, when it says (nullopt: nothing said, a step counts 1).
     /// Migration carries it to the migrated rule.
     std::optional<Cost> cost;
+    /// The action a step of the rule is a step of, when that is not the rule itself (nullopt:
+    /// the action is the rule, its arguments the rule's parameters).
+    std::optional<ActionOf> action;
 
     /// A rule with empty states on a schema (to be filled by a builder or the elaborator).
     explicit Rule(const schema::SchemaPtr& s) : L(s), K(s), R(s) {}
+
+    /// The name of the action a step of the rule is a step of.
+    const std::string& action_name() const { return action ? action->name : name; }
+
+    /// The number of arguments of that action.
+    std::size_t action_arity() const {
+        return action ? action->arguments.size() : parameters.size();
+    }
 
     /// The parts of L at ob outside l(K), in increasing order: what the rule deletes.
     const std::vector<Part>& deleted_parts(ObId ob) const {

@@ -36,7 +36,8 @@ struct RuleSource {
     bool has_params = false;
     std::vector<const Expr*> params;
     std::vector<RuleBlock> blocks;
-    const Expr* cost = nullptr; // `cost = 3`, what a step of the rule costs
+    const Expr* cost = nullptr;   // `cost = 3`, what a step of the rule costs
+    const Expr* action = nullptr; // `action = stack(x, x)`, the action a step of it is a step of
 };
 
 /// The statements of a block, `begin ... end` or `@join begin ... end`, or nullptr.

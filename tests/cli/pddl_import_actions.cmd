@@ -1,0 +1,3 @@
+plan build/golden/pddl_import_actions/dup.cp --problem dup-p01 --no-timing
+before: rm -rf build/golden/pddl_import_actions && mkdir -p build/golden/pddl_import_actions && $CATPLAN pddl import tests/pddl/dup-domain.pddl tests/pddl/dup-p01.pddl -o build/golden/pddl_import_actions/dup.cp && printf 'connect(b, a)\nconnect(a, a)\nconnect(b, a)\nconnect-other(a, b)\nconnect(a)\n' > build/golden/pddl_import_actions/steps.plan && printf 'connect(a, b, a)\nconnect-other(b, b, b)\n' > build/golden/pddl_import_actions/bad.plan
+after: D=build/golden/pddl_import_actions; grep -n "action = " $D/dup.cp; $CATPLAN validate $D/dup.cp --problem dup-p01 --plan $D/steps.plan 2>&1; echo "exit $?"; $CATPLAN validate $D/dup.cp --problem dup-p01 --plan $D/bad.plan 2>&1; echo "exit $?"
