@@ -1,6 +1,7 @@
 #include "catplan/pddl/analysis.hpp"
 
 #include "catplan/base/assert.hpp"
+#include "catplan/base/union_find.hpp"
 
 #include <algorithm>
 #include <deque>
@@ -99,13 +100,6 @@ struct LiftedAction {
 
     bool may_equal(const TermAtom& a, const TermAtom& b) const {
         return a.predicate == b.predicate && may_equal(a.args, b.args);
-    }
-
-    /// A delete that surely removes a fact that held: in the precondition, and no add may
-    /// put it back.
-    bool sure_delete(const TermAtom& d) const {
-        return in_pos(d) && std::none_of(add.begin(), add.end(),
-                                         [&](const TermAtom& a) { return may_equal(a, d); });
     }
 };
 
@@ -254,12 +248,18 @@ private:
                 added.push_back({&e, p, instance(e.args, *p)});
             }
         }
-        // Two facts of one instance added at once: the count may grow by two.
+        // Two facts of one instance added at once: the count may grow by two, unless the
+        // precondition could not hold where they are of one instance. A bigger candidate may
+        // make it so (stack(x, x) needs (holding x) and (clear x), two facts of one instance of
+        // "at most one of (clear ?b), (holding ?b), (on * ?b)").
         for (std::size_t i = 0; i < added.size(); ++i) {
             for (std::size_t j = i + 1; j < added.size(); ++j) {
                 const auto &x = added[i], &y = added[j];
                 bool same_fact = x.part == y.part && x.part->counted < 0;
-                if (!same_fact && a.may_equal(x.params, y.params)) {
+                if (!same_fact && a.may_equal(x.params, y.params) &&
+                    !excluded(inv, a, x.params, y.params)) {
+                    grow(inv, a, x.params);
+                    grow(inv, a, y.params);
                     return false;
                 }
             }
@@ -267,7 +267,7 @@ private:
         for (const auto& e : added) {
             bool ok = std::any_of(a.del.begin(), a.del.end(), [&](const TermAtom& d) {
                 const InvariantPart* q = inv.find(d.predicate);
-                return q != nullptr && a.sure_delete(d) && instance(d.args, *q) == e.params;
+                return q != nullptr && sure_delete(inv, a, d) && instance(d.args, *q) == e.params;
             });
             if (!ok) {
                 grow(inv, a, e.params);
@@ -277,6 +277,45 @@ private:
         return true;
     }
 
+    /// Whether the action cannot apply, in a state where inv holds, with the terms xs[i] and
+    /// ys[i] naming one object: its precondition would then hold facts of two predicates in one
+    /// instance of inv (facts of two predicates stay two however more terms are identified).
+    /// This assumes inv in the state before, as the induction that proves inv may.
+    static bool excluded(const Invariant& inv, const LiftedAction& a,
+                         const std::vector<std::size_t>& xs, const std::vector<std::size_t>& ys) {
+        UnionFind same(a.terms.size());
+        for (std::size_t i = 0; i < xs.size() && i < ys.size(); ++i) {
+            same.union_sets(static_cast<std::uint32_t>(xs[i]), static_cast<std::uint32_t>(ys[i]));
+        }
+        std::vector<std::pair<const std::string*, std::vector<std::size_t>>> facts;
+        for (const auto& p : a.pos) {
+            const InvariantPart* part = inv.find(p.predicate);
+            if (part == nullptr) {
+                continue;
+            }
+            std::vector<std::size_t> args;
+            for (std::size_t t : p.args) {
+                args.push_back(same.find(static_cast<std::uint32_t>(t)));
+            }
+            auto params = instance(args, *part);
+            for (const auto& [predicate, other] : facts) {
+                if (*predicate != p.predicate && other == params) {
+                    return true;
+                }
+            }
+            facts.emplace_back(&p.predicate, std::move(params));
+        }
+        return false;
+    }
+
+    /// A delete that surely removes a fact that held: in the precondition, and no add puts it
+    /// back (an add that could only where the action cannot apply, excluded, does not).
+    static bool sure_delete(const Invariant& inv, const LiftedAction& a, const TermAtom& d) {
+        return a.in_pos(d) && std::none_of(a.add.begin(), a.add.end(), [&](const TermAtom& e) {
+                   return a.may_equal(e, d) && !excluded(inv, a, e.args, d.args);
+               });
+    }
+
     /// The candidates that add a predicate the action surely deletes, with the parameters of
     /// an add that nothing balanced.
     void grow(const Invariant& inv, const LiftedAction& a, const std::vector<std::size_t>& params) {
@@ -284,7 +323,7 @@ private:
             return;
         }
         for (const auto& d : a.del) {
-            if (inv.find(d.predicate) != nullptr || !a.sure_delete(d)) {
+            if (inv.find(d.predicate) != nullptr || !sure_delete(inv, a, d)) {
                 continue;
             }
             InvariantPart q{d.predicate, {}, -1};

@@ -9,7 +9,11 @@
 //   world has "at most one of (clear ?b), (holding ?b), (on * ?b)" for every ?b. An invariant is
 //   found by guessing and checking: every action that adds one of its facts must delete one of
 //   the same parameters that its precondition requires, and no action adds two; a candidate that
-//   fails is grown by a fact the action deletes, as Fast Downward's translator does. It holds in
+//   fails is grown by a fact the action deletes, as Fast Downward's translator does. The check
+//   may assume the candidate before the step (it is an induction): an identification of terms
+//   under which the precondition holds facts of two of its predicates of one instance cannot
+//   apply, so two adds that meet only there, or an add that could restore a deleted fact only
+//   there, do not count (stack(x, x) needs (holding x) and (clear x)). It holds in
 //   every reachable state when it holds in the initial state (checked for each problem). Two facts
 //   of one invariant with the same parameters cannot hold together (a mutex).
 // - Argument patterns: which arguments of a fact can name one object ((on ?b ?b) never holds,

@@ -40,7 +40,8 @@
 // Exactly one variant applies to a ground PDDL step in a state, so plans correspond one to one.
 // Negative preconditions are NACs; a fact both added and deleted ends true (add after delete).
 // The 4-operator blocks world has four rules, one per action. Variants are named `action`,
-// `action~2`, ...; everything shown to a user names the action (`to_ipc_plan`, `action_of`).
+// `action~2`, ...; each says which action it carries out (rewrite::ActionOf), and everything
+// shown to a user names the action (plan/actions.hpp, `to_ipc_plan`, `action_of`).
 //
 // The analysis assumes that the initial state satisfies the domain's invariants and that its
 // facts name distinct objects (Assumptions). A problem that does not gets rules of its own, on

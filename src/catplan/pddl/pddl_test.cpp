@@ -1,3 +1,4 @@
+#include "catplan/pddl/analysis.hpp"
 #include "catplan/pddl/detail/test_load.hpp"
 #include "catplan/pddl/export.hpp"
 #include "catplan/pddl/import.hpp"
@@ -104,6 +105,31 @@ TEST(PddlPlans, IpcPlanRoundTrip) {
 
 std::size_t facts(const Import& im, const acset::ACSet& x, const std::string& predicate) {
     return x.num_parts(im.predicate_ob.at(predicate));
+}
+
+TEST(PddlAnalysis, BlocksworldsInvariantLeavesOneRulePerAction) {
+    auto l = load("blocksworld-domain.pddl", "blocksworld-p01.pddl");
+    ASSERT_TRUE(l->import) << l->errors();
+    // Found only by growing a candidate that two adds of one instance would break: unstack(x, x)
+    // adds (holding x) and (clear x), but needs (on x x) and (clear x), which the invariant
+    // forbids together.
+    std::vector<std::string> found;
+    for (const auto& inv : find_invariants(*l->domain)) {
+        found.push_back(inv.to_string());
+    }
+    EXPECT_NE(
+        std::find(found.begin(), found.end(), "at most one of (clear ?1), (holding ?1), (on * ?1)"),
+        found.end())
+        << ::testing::PrintToString(found);
+    // So stack(x, x) and unstack(x, x) can never apply, and each action is one rule.
+    for (const auto& a : l->import->actions) {
+        EXPECT_EQ(a.variants.size(), 1u) << a.action;
+    }
+    // A step that identifies two parameters where that may apply keeps its rule: gripper's
+    // (move rooma rooma) is a step that changes nothing.
+    auto g = load("gripper-domain.pddl", "gripper-p01.pddl");
+    ASSERT_TRUE(g->import) << g->errors();
+    EXPECT_EQ(g->import->find_action("move")->variants.size(), 2u);
 }
 
 TEST(PddlSemantics, AddingATrueFactKeepsOneFact) {
