@@ -19,6 +19,41 @@ namespace {
 
 using acset::ACSet;
 
+// The action's arguments (rewrite::ActionOf) of a rule whose parameters a domain replaced: each
+// the same part as before, and every new parameter among them; false after an error.
+bool action_parameters(const rewrite::Rule& before, rewrite::Rule& after, SourceRange at,
+                       DiagnosticSink& sink) {
+    if (!after.action) {
+        return true;
+    }
+    std::vector<bool> given(after.parameters.size(), false);
+    for (auto& a : after.action->arguments) {
+        if (a.parameter < 0) {
+            continue;
+        }
+        const auto& old = before.parameters[static_cast<std::size_t>(a.parameter)];
+        auto p = std::find_if(after.parameters.begin(), after.parameters.end(),
+                              [&](const auto& q) { return q.ob == old.ob && q.part == old.part; });
+        if (p == after.parameters.end()) {
+            sink.error(at, fmt::format("the parameters leave out '{}', an argument of the action "
+                                       "'{}' of rule '{}'",
+                                       old.name, after.action->name, after.name));
+            return false;
+        }
+        a.parameter = static_cast<int>(p - after.parameters.begin());
+        given[static_cast<std::size_t>(a.parameter)] = true;
+    }
+    for (std::size_t i = 0; i < given.size(); ++i) {
+        if (!given[i]) {
+            sink.error(at, fmt::format("parameter '{}' is not an argument of the action '{}' of "
+                                       "rule '{}'",
+                                       after.parameters[i].name, after.action->name, after.name));
+            return false;
+        }
+    }
+    return true;
+}
+
 // A rule named in a domain, `unstack` or with parameters `unstack(block, underblock)`.
 rewrite::RulePtr named_rule(Elaborator& ctx, const Expr& st) {
     DiagnosticSink& sink = ctx.sink;
@@ -58,7 +93,7 @@ rewrite::RulePtr named_rule(Elaborator& ctx, const Expr& st) {
             ok = false;
         }
     }
-    return ok ? copy : nullptr;
+    return ok && action_parameters(*d->rule, *copy, at, sink) ? copy : nullptr;
 }
 
 // One statement of a domain's body as a rule (`@rule ...`, `:name => @migration(...)` or a rule's

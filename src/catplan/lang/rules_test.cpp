@@ -666,6 +666,29 @@ end
 end
 )");
     std::string out = l->sink.render();
+    // A domain that gives a rule of an action other parameters keeps the action's arguments.
+    auto renamed = load_text(std::string(kWalking) + R"(
+@rule stay_put(r) on Rooms begin
+  action = move(r, r)
+  Pre => begin
+    (r, s)::Room
+  end
+end
+@domain Kept(Rooms) begin
+  stay_put(r)
+end
+@domain Lost(Rooms) begin
+  stay_put(s)
+end
+)");
+    const auto* kept = renamed->module.find("Kept");
+    ASSERT_TRUE(kept != nullptr && kept->domain != nullptr) << renamed->sink.render();
+    EXPECT_EQ(kept->domain->rules.at(0)->action->arguments,
+              (std::vector<rewrite::ActionOf::Argument>{{0, ""}, {0, ""}}));
+    EXPECT_NE(renamed->sink.render().find("error: the parameters leave out 'r', an argument of "
+                                          "the action 'move' of rule 'stay_put'"),
+              std::string::npos)
+        << renamed->sink.render();
     EXPECT_NE(out.find("test.cp:12:9: error: rule 'b' carries out the action 'go' with 2 "
                        "arguments, but rule 'a' does with 3"),
               std::string::npos)
