@@ -4,8 +4,6 @@
 #include "catplan/pddl/costs.hpp"
 #include "catplan/pddl/steps.hpp"
 #include "catplan/plan/actions.hpp"
-#include "catplan/plan/validate.hpp"
-#include "catplan/rewrite/dpo.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -465,27 +463,14 @@ IpcValidation validate_ipc_plan(const Import& im, const IpcPlan& plan) {
     auto v = replay_ipc_plan(
         im.pddl_domain, *im.pddl_problem, plan,
         [&](std::size_t, const IpcStep& s) -> std::optional<std::string> {
-            const ActionVariants* av = im.find_action(s.action);
-            CATPLAN_ASSERT(av != nullptr, "every action of the domain is imported");
-            std::string last = "no rule variant fits the arguments";
-            for (const auto& var : av->variants) {
-                auto step = plan::rule_step(*var.rule, plan::Step{s.action, s.args, s.range});
-                if (!step) {
-                    continue;
-                }
-                auto m = plan::resolve_step(*var.rule, x, *step);
-                if (!m) {
-                    last = m.error();
-                    continue;
-                }
-                auto r = rewrite::rewrite_in_place(*var.rule, x, *m);
-                CATPLAN_ASSERT(r.has_value(), "a resolved match applies");
+            auto step =
+                plan::apply_action_step(*im.domain, x, plan::Step{s.action, s.args, s.range});
+            if (step) {
                 rules.steps.push_back(std::move(*step));
                 return std::nullopt;
             }
-            // The PDDL precondition holds, so some variant should have applied: a
-            // bug.
-            return fmt::format("internal error: no rule applies ({})", last);
+            // The PDDL precondition holds, so some variant should have applied: a bug.
+            return fmt::format("internal error: no rule applies ({})", step.error());
         });
     v.plan = std::move(rules);
     v.final_state = std::move(x);

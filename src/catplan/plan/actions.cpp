@@ -97,20 +97,25 @@ Plan action_plan(const Domain& d, const Plan& plan) {
     return out;
 }
 
-namespace {
-
-/// Applies the step to x when it applies; whether it did.
-bool apply(const Rule& r, ACSet& x, const Step& step) {
-    auto m = resolve_step(r, x, step);
-    if (!m) {
-        return false;
+Result<Step> apply_action_step(const Domain& d, ACSet& x, const Step& action_step) {
+    std::string why =
+        fmt::format("no rule of the action {} fits the arguments", action_step.action);
+    for (const Rule* r : action_rules(d, action_step.action)) {
+        auto step = rule_step(*r, action_step);
+        if (!step) {
+            continue;
+        }
+        auto m = resolve_step(*r, x, *step);
+        if (!m) {
+            why = m.error();
+            continue;
+        }
+        auto applied = rewrite::rewrite_in_place(*r, x, *m);
+        CATPLAN_ASSERT(applied.has_value(), "a resolved match applies");
+        return *step;
     }
-    auto applied = rewrite::rewrite_in_place(r, x, *m);
-    CATPLAN_ASSERT(applied.has_value(), "a resolved match applies");
-    return true;
+    return fail(std::move(why));
 }
-
-} // namespace
 
 Plan rule_plan(const Domain& d, const ACSet& initial, const Plan& plan) {
     if (!has_actions(d)) {
@@ -120,27 +125,30 @@ Plan rule_plan(const Domain& d, const ACSet& initial, const Plan& plan) {
     ACSet x = initial;
     bool replaying = true;
     for (const auto& s : plan.steps) {
-        std::optional<Step> fits, applied;
-        for (const Rule* r : action_rules(d, s.action)) {
-            auto step = rule_step(*r, s);
-            if (!step) {
+        if (replaying) {
+            if (auto applied = apply_action_step(d, x, s)) {
+                out.steps.push_back(std::move(*applied));
                 continue;
             }
-            if (!fits) {
-                fits = step;
-            }
-            if (replaying && apply(*r, x, *step)) {
-                applied = step;
+        }
+        // Not replayed: the first rule the arguments fit, or a rule by its own name.
+        std::optional<Step> fits;
+        for (const Rule* r : action_rules(d, s.action)) {
+            fits = rule_step(*r, s);
+            if (fits) {
                 break;
             }
         }
         const Rule* named = fits ? nullptr : d.find_rule(s.action);
-        if (named != nullptr && replaying && named->parameters.size() == s.args.size() &&
-            apply(*named, x, s)) {
-            applied = s;
+        if (named != nullptr && replaying && named->parameters.size() == s.args.size()) {
+            auto m = resolve_step(*named, x, s);
+            if (m && rewrite::rewrite_in_place(*named, x, *m)) {
+                out.steps.push_back(s);
+                continue;
+            }
         }
-        replaying = replaying && applied.has_value();
-        out.steps.push_back(applied ? *applied : fits ? *fits : s);
+        replaying = false;
+        out.steps.push_back(fits ? *fits : s);
     }
     return out;
 }

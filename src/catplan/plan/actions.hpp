@@ -8,6 +8,7 @@
 // per step the rule that applies (exactly one does for an imported action); action_plan goes back.
 // A rule that says nothing carries out the action of its own name with its own parameters.
 
+#include "catplan/base/result.hpp"
 #include "catplan/plan/domain.hpp"
 
 #include <optional>
@@ -40,6 +41,10 @@ std::string describe_step(const Domain& d, const Step& rule_step);
 
 /// A plan of rule steps written as actions (action_step of each).
 Plan action_plan(const Domain& d, const Plan& plan);
+
+/// Applies a step of an action to x, in place, as the first rule of the action whose arguments
+/// fit and whose match exists: the rule step applied, or why none applied (the last reason).
+Result<Step> apply_action_step(const Domain& d, ACSet& x, const Step& action_step);
 
 /// The rule steps of a plan of actions: each step as the first rule of its action that applies
 /// when the plan is replayed from `initial`. From the first step that no rule applies to on, a
