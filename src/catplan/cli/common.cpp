@@ -365,14 +365,15 @@ bool load_transfer_plan(Session& s, TransferInputs& in, const std::string& path,
 }
 
 transfer::TransferOptions transfer_options(const TransferArgs& a, const TransferInputs& in) {
-    transfer::TransferOptions options;
+    // PDDL inputs: the target domain's own actions carry the steps out.
+    transfer::TransferOptions options =
+        in.pddl ? pddl_transfer::transfer_options(*in.pddl->setting) : transfer::TransferOptions{};
     options.rename_by_type = a.rename_by_type;
     // The verdict is about the goal intended in the target domain, when one is given.
     options.goal = in.target_goal;
     options.goal_conditions = in.target_goal_conditions;
+    // The command names the user's target problem by its file.
     options.goal_name = in.pddl && a.goal.empty() ? a.target_problem : a.goal;
-    // PDDL inputs: the target domain's own actions carry the steps out.
-    options.target_actions = in.pddl ? in.pddl->actions : nullptr;
     options.strict = a.strict;
     options.follow_source = a.follow_source;
     return options;

@@ -1,15 +1,14 @@
 #pragma once
 // `catplan transfer` with PDDL inputs: the map's file imports the source (and target) PDDL
 // domains, `--problem` is a PDDL problem of the source domain and `--plan` an IPC plan (as Fast
-// Downward writes it, `; cost` line and all). The target plan is carried out in the target
-// domain's own actions where it is a PDDL domain (transfer/correspond.hpp, repair.hpp), printed in
-// IPC form, written as an IPC plan with -o, and checked by catplan's PDDL validator on the target
-// problem Δ_F(I), Δ_F(G) (written as PDDL with --problem-output, or compared with the user's
-// target problem given by --target-problem).
+// Downward writes it, `; cost` line and all). pddl_transfer/ does the work; this file reads the
+// files the options name and words what was found: the target plan in IPC form (written with -o),
+// catplan's PDDL validator on Δ_F(I), Δ_F(G) (written as PDDL with --problem-output) and the
+// comparison with the user's target problem (--target-problem).
 
 #include "catplan/cli/common.hpp"
-#include "catplan/pddl/import.hpp"
 #include "catplan/pddl/ipc_plan.hpp"
+#include "catplan/pddl_transfer/pddl_transfer.hpp"
 #include "catplan/transfer/transfer.hpp"
 
 #include <iosfwd>
@@ -23,16 +22,10 @@ namespace catplan::cli {
 
 /// What a transfer with PDDL inputs reads besides the common inputs.
 struct PddlTransfer {
-    /// The source domain's import with the problem (its rules may be the problem's own).
-    std::shared_ptr<const pddl::Import> source;
-    /// The target domain's import, when the map's target is a PDDL domain (else null).
-    std::shared_ptr<const pddl::Import> target;
-    /// The target's own actions, matched to the generated ones (with the target).
-    std::shared_ptr<const transfer::TargetActions> actions;
+    /// What every plan of the transfer shares.
+    std::shared_ptr<const pddl_transfer::Setting> setting;
     /// The source plan as written.
     pddl::IpcPlan plan;
-    /// --target-problem: the user's own target problem.
-    std::optional<pddl::Problem> target_problem;
 };
 
 /// Whether a --problem argument names a PDDL file.
@@ -60,10 +53,10 @@ struct PddlChecks {
     nlohmann::ordered_json json = nlohmann::ordered_json::object();
 };
 
-/// After a transfer with PDDL inputs: the target plan in IPC form put in `plan_text`, checked by
-/// catplan's PDDL validator, and --target-problem compared (what it found added to `checks`),
-/// and --problem-output's file added to `outputs`, for the caller to write all or none of;
-/// returns kOk, or kNo when the check or the comparison fails.
+/// After a transfer with PDDL inputs: the target plan in IPC form put in `plan_text`, what
+/// catplan's PDDL validator and the comparison with --target-problem found put in `checks`, and
+/// --problem-output's file added to `outputs`, for the caller to write all or none of; returns
+/// kOk, or kNo when the check or the comparison fails.
 int finish_pddl_transfer(const TransferInputs& in, const TransferArgs& a,
                          const transfer::TransferResult& t, std::string& plan_text,
                          PddlChecks& checks, std::vector<OutputText>& outputs);

@@ -132,7 +132,7 @@ nlohmann::ordered_json steps_json(const TransferInputs& in, const transfer::Tran
         if (st.kind == transfer::StepTransfer::Kind::Generated) {
             target_rule = t.target_domain.domain->find_rule(st.target.action);
         } else if (st.kind == transfer::StepTransfer::Kind::Corresponds) {
-            target_rule = in.pddl->actions->domain->find_rule(st.target.action);
+            target_rule = in.pddl->setting->actions->domain->find_rule(st.target.action);
         }
         nlohmann::ordered_json targets = nlohmann::ordered_json::array();
         for (const auto& ts : st.target_steps) {

@@ -1,0 +1,153 @@
+#include "catplan/pddl_transfer/pddl_transfer.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <string>
+
+namespace catplan::pddl_transfer {
+namespace {
+
+const std::string kExamples = std::string(CATPLAN_SOURCE_DIR) + "/examples/pddl/";
+
+/// A map's file loaded, with the sources its diagnostics point into.
+struct Loaded {
+    SourceManager sources;
+    DiagnosticSink sink{sources};
+    lang::Module module;
+
+    explicit Loaded(const std::string& file) {
+        module = lang::load_file(kExamples + file, sources, sink);
+        EXPECT_FALSE(sink.has_errors()) << sink.render();
+    }
+
+    std::optional<Setting> setting(const std::string& map, const std::string& problem,
+                                   const std::string& target_problem = "") {
+        std::optional<std::uint32_t> t;
+        if (!target_problem.empty()) {
+            t = *sources.add_file(kExamples + target_problem);
+        }
+        return load_setting(module, *module.find(map), *sources.add_file(kExamples + problem), t,
+                            sources, sink);
+    }
+
+    pddl::IpcPlan plan(const Setting& s, const std::string& file) {
+        auto p = read_plan(s, *sources.add_file(kExamples + file), sources, sink);
+        EXPECT_TRUE(p.has_value()) << sink.render();
+        return p.value_or(pddl::IpcPlan{});
+    }
+};
+
+/// The transfer of `plan` in the setting, with its PDDL checks.
+std::pair<transfer::TransferResult, Checks> run(const Setting& s, const pddl::IpcPlan& plan) {
+    auto t = transfer::transfer_plan(*s.map, *s.source->problem, source_plan(s, plan),
+                                     transfer_options(s));
+    auto c = check(s, plan, t);
+    return {std::move(t), std::move(c)};
+}
+
+TEST(PddlTransfer, ThreeOperatorMovesAreRepairedIntoFourOperatorSteps) {
+    Loaded l("blocks/three_to_four.cp");
+    auto s = l.setting("ThreeToFour", "blocks/p01-3.pddl");
+    ASSERT_TRUE(s.has_value()) << l.sink.render();
+    ASSERT_NE(s->target, nullptr);
+    auto plan = l.plan(*s, "blocks/p01-3.plan");
+    ASSERT_EQ(plan.size(), 3U);
+    auto [t, c] = run(*s, plan);
+    ASSERT_TRUE(t.verdict.valid()) << t.verdict.reason();
+    // No 4-operator action is a migrated move: every source step becomes two target steps.
+    ASSERT_EQ(t.steps.size(), 3U);
+    for (const auto& st : t.steps) {
+        EXPECT_EQ(st.kind, transfer::StepTransfer::Kind::Repaired);
+        EXPECT_EQ(st.target_steps.size(), 2U);
+    }
+    ASSERT_TRUE(c.target_plan.has_value());
+    ASSERT_EQ(c.target_plan->size(), 6U);
+    EXPECT_EQ((*c.target_plan)[0].to_string(), "(unstack a b)");
+    EXPECT_EQ(ipc_text(*s, t.steps[0].target_steps[1]), (*c.target_plan)[1].to_string());
+    ASSERT_TRUE(c.validation.has_value());
+    EXPECT_TRUE(c.validation->valid) << c.validation->reason;
+    EXPECT_NE(c.plan_text.find("; cost = 6 (unit cost)"), std::string::npos) << c.plan_text;
+    EXPECT_FALSE(c.source_cost.has_value()); // blocks3 declares no action costs
+    ASSERT_TRUE(c.migrated.has_value());
+    EXPECT_EQ(c.migrated->objects.size(), 3U);
+    EXPECT_FALSE(c.comparison.has_value());
+    EXPECT_TRUE(c.ok(t));
+}
+
+TEST(PddlTransfer, ActionsOfADeltaMapCorrespondAndTheUsersProblemIsCompared) {
+    Loaded l("warehouse/hospital_to_warehouse.cp");
+    auto s =
+        l.setting("HospitalToWarehouse", "warehouse/warehouse-3.pddl", "warehouse/hospital-3.pddl");
+    ASSERT_TRUE(s.has_value()) << l.sink.render();
+    auto plan = l.plan(*s, "warehouse/warehouse-3.plan");
+    auto [t, c] = run(*s, plan);
+    ASSERT_TRUE(t.verdict.valid()) << t.verdict.reason();
+    for (const auto& st : t.steps) {
+        EXPECT_EQ(st.kind, transfer::StepTransfer::Kind::Corresponds);
+    }
+    ASSERT_TRUE(c.target_plan.has_value());
+    EXPECT_EQ(c.target_plan->size(), plan.size());
+    EXPECT_EQ((*c.target_plan)[0].action, "collect");
+    EXPECT_TRUE(c.validation && c.validation->valid);
+    ASSERT_TRUE(c.comparison.has_value());
+    EXPECT_EQ(c.comparison->name, s->target_problem->name);
+    EXPECT_TRUE(c.comparison->same());
+    EXPECT_TRUE(c.ok(t));
+}
+
+TEST(PddlTransfer, ATargetProblemThatIsNotTheMigratedInitialStateSaysWhatDiffers) {
+    Loaded l("warehouse/hospital_to_warehouse.cp");
+    auto s =
+        l.setting("HospitalToWarehouse", "warehouse/warehouse-3.pddl", "warehouse/hospital-3.pddl");
+    ASSERT_TRUE(s.has_value()) << l.sink.render();
+    // The user's problem with one fact more than Δ_F(I).
+    auto& init = s->target_problem->init;
+    auto fact =
+        *std::find_if(init.begin(), init.end(), [](const auto& a) { return !a.args.empty(); });
+    fact.args[0].name = "nowhere";
+    init.push_back(fact);
+    auto [t, c] = run(*s, l.plan(*s, "warehouse/warehouse-3.plan"));
+    ASSERT_TRUE(c.comparison.has_value());
+    EXPECT_FALSE(c.comparison->same());
+    EXPECT_TRUE(c.comparison->only_in_migrated.empty());
+    ASSERT_EQ(c.comparison->only_in_target_problem.size(), 1U);
+    EXPECT_NE(c.comparison->only_in_target_problem[0].find("nowhere"), std::string::npos);
+    EXPECT_FALSE(c.ok(t));
+}
+
+TEST(PddlTransfer, APlanStepNoStateCouldTakeIsBadInput) {
+    Loaded l("blocks/three_to_four.cp");
+    auto s = l.setting("ThreeToFour", "blocks/p01-3.pddl");
+    ASSERT_TRUE(s.has_value()) << l.sink.render();
+    auto file = l.sources.add_buffer("bad.plan", "(move a b)\n(fly a)\n");
+    EXPECT_FALSE(read_plan(*s, file, l.sources, l.sink).has_value());
+    EXPECT_NE(l.sink.render().find("bad.plan:2:"), std::string::npos) << l.sink.render();
+}
+
+TEST(PddlTransfer, AMapFromADomainNotReadFromPddlIsRefused) {
+    SourceManager sources;
+    DiagnosticSink sink(sources);
+    auto module = lang::load_source("m.cp", R"(
+@present A(FreeSchema) begin
+  X::Ob
+end
+@present B(FreeSchema) begin
+  Y::Ob
+end
+@migration F(B, A) begin
+  Y => X
+end
+)",
+                                    sources, sink);
+    ASSERT_FALSE(sink.has_errors()) << sink.render();
+    auto problem = sources.add_buffer("p.pddl", "(define (problem p) (:domain a))");
+    EXPECT_FALSE(
+        load_setting(module, *module.find("F"), problem, std::nullopt, sources, sink).has_value());
+    EXPECT_NE(sink.render().find("map 'F' migrates from A, which is no PDDL domain"),
+              std::string::npos)
+        << sink.render();
+}
+
+} // namespace
+} // namespace catplan::pddl_transfer
