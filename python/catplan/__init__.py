@@ -32,6 +32,8 @@ from ._catplan import (
     Module,
     Morphism,
     PddlTask,
+    PddlTransfer,
+    PddlTransferStep,
     Plan,
     Problem,
     Replan,
@@ -62,6 +64,7 @@ from ._catplan import (
     plan,
     sigma,
     transfer,
+    transfer_pddl,
     validate,
 )
 
@@ -69,12 +72,13 @@ __version__ = "0.1.0"
 
 __all__ = [
     "CatplanError", "Claim", "Diagnostic", "Domain", "Fault", "GoalSatisfaction", "Hypothesis",
-    "IpcValidation", "Map",
-    "Module", "Morphism", "PddlTask", "Plan", "Problem", "Replan", "Rule", "Schema",
+    "IpcValidation", "Map", "Module", "Morphism", "PddlTask", "PddlTransfer", "PddlTransferStep",
+    "Plan", "Problem", "Replan", "Rule", "Schema",
     "SearchResult", "State", "Step", "Transfer", "TransferStep", "Validation", "Var", "Verdict",
     "compose", "count_homs", "export_pddl", "export_pddl_problem", "hom", "homs",
     "is_isomorphic", "load", "load_pddl", "loads", "loads_pddl", "migrate", "migrate_domain",
-    "parse_ipc_plan", "plan", "sigma", "to_tables", "transfer", "validate",
+    "parse_ipc_plan", "plan", "sigma", "to_tables", "transfer", "transfer_pddl",
+    "validate",
 ]
 
 

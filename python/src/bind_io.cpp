@@ -84,32 +84,6 @@ pddl::IpcPlan ipc_plan(const std::string& text, const std::string& filename) {
     return std::move(*p);
 }
 
-pddl::IpcPlan ipc_plan_arg(const py::handle& plan) {
-    if (py::isinstance<py::str>(plan)) {
-        return ipc_plan(plan.cast<std::string>(), "<ipc plan>");
-    }
-    pddl::IpcPlan out;
-    for (auto s : plan) {
-        auto t = s.cast<py::tuple>();
-        if (t.size() != 2) {
-            throw py::type_error("an IPC step is a tuple (action, [args])");
-        }
-        pddl::IpcStep step;
-        step.action = t[0].cast<std::string>();
-        step.args = t[1].cast<std::vector<std::string>>();
-        out.push_back(std::move(step));
-    }
-    return out;
-}
-
-py::list ipc_tuples(const pddl::IpcPlan& p) {
-    py::list out;
-    for (const auto& s : p) {
-        out.append(py::make_tuple(s.action, s.args));
-    }
-    return out;
-}
-
 struct PyIpcValidation {
     bool valid = false;
     bool goal_reached = false;
@@ -145,6 +119,32 @@ std::string to_ipc(const PyPddl& t, const py::handle& plan) {
 }
 
 } // namespace
+
+pddl::IpcPlan ipc_plan_arg(const py::handle& plan) {
+    if (py::isinstance<py::str>(plan)) {
+        return ipc_plan(plan.cast<std::string>(), "<ipc plan>");
+    }
+    pddl::IpcPlan out;
+    for (auto s : plan) {
+        auto t = s.cast<py::tuple>();
+        if (t.size() != 2) {
+            throw py::type_error("an IPC step is a tuple (action, [args])");
+        }
+        pddl::IpcStep step;
+        step.action = t[0].cast<std::string>();
+        step.args = t[1].cast<std::vector<std::string>>();
+        out.push_back(std::move(step));
+    }
+    return out;
+}
+
+py::list ipc_tuples(const pddl::IpcPlan& p) {
+    py::list out;
+    for (const auto& s : p) {
+        out.append(py::make_tuple(s.action, s.args));
+    }
+    return out;
+}
 
 void bind_io(py::module_& m) {
     py::class_<PyPddl>(m, "PddlTask", R"doc(

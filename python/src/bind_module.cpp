@@ -11,13 +11,6 @@ namespace catplan::python {
 
 namespace {
 
-/// A loaded file: its declarations, the text they were read from and the warnings.
-struct PyModule {
-    std::shared_ptr<SourceManager> sources;
-    lang::Module module;
-    std::vector<PyDiagnostic> warnings;
-};
-
 std::string_view kind_word(lang::DeclKind k) {
     switch (k) {
     case lang::DeclKind::Schema:

@@ -29,16 +29,6 @@ struct PyReplan {
     std::size_t edit_distance = 0;
 };
 
-/// What transfer returns: the library's result and the inputs, for the report.
-struct PyTransfer {
-    std::shared_ptr<const transfer::TransferResult> t;
-    std::shared_ptr<const transfer::Replan> replan;
-    PyMap map;
-    PyProblem problem;
-    plan::Plan plan;
-    long transfer_peak_kib = 0;
-};
-
 std::shared_ptr<const acset::ACSet> rule_pre(const plan::DomainPtr& d, const std::string& name) {
     if (d == nullptr) {
         return nullptr;

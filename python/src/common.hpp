@@ -10,11 +10,14 @@
 #include "catplan/base/result.hpp"
 #include "catplan/base/source.hpp"
 #include "catplan/hom/morphism.hpp"
+#include "catplan/lang/module.hpp"
 #include "catplan/migrate/schema_map.hpp"
+#include "catplan/pddl/ipc_plan.hpp"
 #include "catplan/plan/domain.hpp"
 #include "catplan/plan/search.hpp"
 #include "catplan/rewrite/rule.hpp"
 #include "catplan/schema/schema.hpp"
+#include "catplan/transfer/transfer.hpp"
 
 #include <atomic>
 #include <chrono>
@@ -88,6 +91,17 @@ struct PyMap {
     std::string name;
 };
 
+/// What catplan.transfer returns (catplan.Transfer): the library's result and the inputs, for
+/// the report.
+struct PyTransfer {
+    std::shared_ptr<const transfer::TransferResult> t;
+    std::shared_ptr<const transfer::Replan> replan;
+    PyMap map;
+    PyProblem problem;
+    plan::Plan plan;
+    long transfer_peak_kib = 0;
+};
+
 /// A morphism with its domain and codomain when they are known (for labels and pictures).
 struct PyMorphism {
     hom::ACSetMorphism m;
@@ -145,6 +159,14 @@ struct PyDiagnostic {
 
 /// Every diagnostic of a sink, in rendering order.
 std::vector<PyDiagnostic> diagnostics_of(const SourceManager& sources, const DiagnosticSink& sink);
+
+/// A loaded file (catplan.Module): its declarations, the text they were read from (where a
+/// transfer with PDDL inputs also reads its problem and plan) and the warnings.
+struct PyModule {
+    std::shared_ptr<SourceManager> sources;
+    lang::Module module;
+    std::vector<PyDiagnostic> warnings;
+};
 
 /// Thrown (with the GIL held or not) to raise catplan.CatplanError(message) carrying diagnostics.
 struct CatplanError : std::exception {
@@ -218,6 +240,13 @@ struct Interrupted {};
 /// "unstack(E, D)" or ("unstack", ["E", "D"])); CatplanError on a syntax error.
 plan::Plan plan_arg(const py::handle& plan);
 
+/// An IPC plan given as its text (as Fast Downward writes it) or a list of tuples (action,
+/// [args]); CatplanError on a syntax error, TypeError on another shape.
+pddl::IpcPlan ipc_plan_arg(const py::handle& plan);
+
+/// An IPC plan as a list of tuples (action, [args]).
+py::list ipc_tuples(const pddl::IpcPlan& p);
+
 /// Search settings as the Python functions take them.
 struct SearchArgs {
     std::string search = "bfs";
@@ -247,5 +276,6 @@ void bind_hom(py::module_& m);
 void bind_migrate(py::module_& m);
 void bind_io(py::module_& m);
 void bind_transfer(py::module_& m);
+void bind_pddl_transfer(py::module_& m);
 
 } // namespace catplan::python

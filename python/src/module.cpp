@@ -15,4 +15,5 @@ PYBIND11_MODULE(_catplan, m) {
     bind_migrate(m);
     bind_io(m);
     bind_transfer(m);
+    bind_pddl_transfer(m);
 }

@@ -24,3 +24,10 @@ def test_perception(source_dir):
     kitchen = next(line for line in out if line.startswith("kitchen plan:"))
     assert kitchen.startswith("kitchen plan: unstack(bread2, bread1); putdown(bread2)")
     assert out[-1] == "valid (52/52)"
+
+
+def test_pddl_transfer(source_dir):
+    out = run(source_dir, "pddl_transfer.py")
+    assert out[0] == "(move-to-table a b) -> (unstack a b); (put-down a) [repaired]"
+    assert out[3:5] == ["(unstack a b)", "(put-down a)"]
+    assert out[-2:] == ["; cost = 6 (unit cost)", "valid"]

@@ -1,0 +1,57 @@
+"""A transfer with PDDL inputs: an IPC plan in, the target domain's own actions out."""
+
+import pytest
+
+import catplan
+
+
+@pytest.fixture(scope="module")
+def blocks(source_dir):
+    return catplan.load(str(source_dir / "examples/pddl/blocks/three_to_four.cp"))
+
+
+@pytest.fixture(scope="module")
+def warehouse(source_dir):
+    return catplan.load(str(source_dir / "examples/pddl/warehouse/hospital_to_warehouse.cp"))
+
+
+def test_moves_are_repaired_into_four_operator_steps(blocks, source_dir):
+    d = source_dir / "examples/pddl/blocks"
+    r = catplan.transfer_pddl(blocks, "ThreeToFour", str(d / "p01-3.pddl"),
+                              (d / "p01-3.plan").read_text())
+    assert r.valid and r.transfer.valid and r.pddl_valid
+    assert [s.kind for s in r.steps] == ["repaired"] * 3
+    assert r.steps[0].source == ("move-to-table", ["a", "b"])
+    assert r.steps[0].target == [("unstack", ["a", "b"]), ("put-down", ["a"])]
+    assert r.target_plan == [t for s in r.steps for t in s.target]
+    assert len(r.target_plan) == 6
+    assert r.plan_text.rstrip().endswith("; cost = 6 (unit cost)")
+    assert "(:domain blocks4)" in r.problem_text
+    assert r.source_cost is None and r.target_cost is None and r.comparison is None
+    # The target plan is a plan of the 4-operator domain: catplan's own PDDL validator agrees.
+    task = catplan.loads_pddl((d / "blocks4.pddl").read_text(), r.problem_text)
+    assert task.validate(r.plan_text).valid
+
+
+def test_delta_map_steps_correspond_and_the_users_problem_is_compared(warehouse, source_dir):
+    d = source_dir / "examples/pddl/warehouse"
+    plan = catplan.parse_ipc_plan((d / "warehouse-3.plan").read_text())
+    r = catplan.transfer_pddl(warehouse, "HospitalToWarehouse", str(d / "warehouse-3.pddl"),
+                              plan, target_problem=str(d / "hospital-3.pddl"))
+    assert r.valid
+    assert {s.kind for s in r.steps} == {"corresponds"}
+    assert r.steps[0].action == "collect" and len(r.steps[0].target) == 1
+    assert r.target_plan[0][0] == "collect"
+    assert r.comparison["same"] and r.comparison["name"] == "hospital-3"
+    assert r.transfer.verdict.goal.fraction == 1.0
+
+
+def test_bad_plans_and_maps_raise_located_errors(blocks, source_dir):
+    d = source_dir / "examples/pddl/blocks"
+    with pytest.raises(catplan.CatplanError) as e:
+        catplan.transfer_pddl(blocks, "ThreeToFour", str(d / "p01-3.pddl"), "(move a b)\n(fly a)\n")
+    assert any(x.line == 2 for x in e.value.diagnostics)
+    with pytest.raises(KeyError):
+        catplan.transfer_pddl(blocks, "NoSuchMap", str(d / "p01-3.pddl"), "")
+    with pytest.raises(catplan.CatplanError, match="cannot read"):
+        catplan.transfer_pddl(blocks, "ThreeToFour", str(d / "missing.pddl"), "")
