@@ -89,18 +89,6 @@ PyPddlTransfer transfer_pddl(const PyModule& m, const std::string& map, const st
     return r;
 }
 
-std::string kind_word(transfer::StepTransfer::Kind k) {
-    switch (k) {
-    case transfer::StepTransfer::Kind::Corresponds:
-        return "corresponds";
-    case transfer::StepTransfer::Kind::Repaired:
-        return "repaired";
-    case transfer::StepTransfer::Kind::Generated:
-        return "generated";
-    }
-    return "generated";
-}
-
 py::tuple ipc_tuple(const pddl::IpcStep& s) {
     return py::make_tuple(s.action, s.args);
 }
@@ -112,7 +100,7 @@ std::vector<PyPddlStep> pddl_steps(const PyPddlTransfer& r) {
         const auto& s = r.transfer.t->steps[i];
         PyPddlStep p;
         p.source = ipc_tuple(r.plan[i]);
-        p.kind = kind_word(s.kind);
+        p.kind = std::string(transfer::to_string(s.kind));
         for (const auto& step : s.target_steps) {
             auto ipc = st.target ? pddl::to_ipc_plan(*st.target, plan::Plan{{step}})
                                  : Result<pddl::IpcPlan>(Failure{"not a PDDL target"});

@@ -98,18 +98,6 @@ std::vector<plan::Step> target_steps(const transfer::TransferResult& t) {
     return transfer::target_plan(t.steps);
 }
 
-const char* kind_name(transfer::StepTransfer::Kind k) {
-    switch (k) {
-    case transfer::StepTransfer::Kind::Generated:
-        return "generated";
-    case transfer::StepTransfer::Kind::Corresponds:
-        return "corresponds";
-    case transfer::StepTransfer::Kind::Repaired:
-        return "repaired";
-    }
-    return "generated";
-}
-
 // A match as morphism_json when the rule and the state it went into are known (the states are
 // kept for JSON), else null.
 nlohmann::ordered_json match_json(const hom::ACSetMorphism& m, const rewrite::Rule* rule,
@@ -144,7 +132,7 @@ nlohmann::ordered_json steps_json(const TransferInputs& in, const transfer::Tran
         out.push_back(
             {{"source", step_json(st.source.action, st.source.args,
                                   match_json(st.source_match, source_rule, t.source_states, i))},
-             {"carried_out_by", kind_name(st.kind)},
+             {"carried_out_by", transfer::to_string(st.kind)},
              {"target", targets},
              {"lost_parameters", st.lost_parameters}});
         if (st.kind == transfer::StepTransfer::Kind::Repaired) {

@@ -676,6 +676,18 @@ std::string_view to_string(MigrationKind kind) {
     return kind == MigrationKind::Delta ? "delta" : "conjunctive";
 }
 
+std::string_view to_string(StepTransfer::Kind kind) {
+    switch (kind) {
+    case StepTransfer::Kind::Corresponds:
+        return "corresponds";
+    case StepTransfer::Kind::Repaired:
+        return "repaired";
+    case StepTransfer::Kind::Generated:
+        break;
+    }
+    return "generated";
+}
+
 MigratedDomain migrate_domain(const SchemaMap& f, const plan::Domain& d, const std::string& name) {
     auto domain = std::make_shared<plan::Domain>();
     domain->name = name.empty() ? fmt::format("{}_{}", d.name, f.target()->name()) : name;

@@ -143,6 +143,9 @@ struct StepTransfer {
     std::optional<std::size_t> repair_reused_from;
 };
 
+/// "generated", "corresponds" or "repaired".
+std::string_view to_string(StepTransfer::Kind kind);
+
 /// Every target step of a transfer, in order (the steps repairs made included).
 std::vector<plan::Step> target_plan(const std::vector<StepTransfer>& steps);
 
