@@ -94,8 +94,19 @@ std::vector<std::string> plan_strings(const std::vector<plan::Step>& steps) {
     return out;
 }
 
-std::vector<plan::Step> target_steps(const transfer::TransferResult& t) {
-    return transfer::target_plan(t.steps);
+// The target steps as the actions they carry out: a generated step as the source action it is
+// Δ_F of (`stack`, not the rule `stack~2`), the others as the target's own actions.
+std::vector<plan::Step> target_steps(const TransferInputs& in, const transfer::TransferResult& t) {
+    std::vector<plan::Step> out;
+    for (const auto& st : t.steps) {
+        const plan::Domain* d = st.kind == transfer::StepTransfer::Kind::Generated
+                                    ? t.target_domain.domain.get()
+                                    : in.pddl->setting->actions->domain.get();
+        for (const auto& s : st.target_steps) {
+            out.push_back(d != nullptr ? plan::action_step(*d, s) : s);
+        }
+    }
+    return out;
 }
 
 // A match as morphism_json when the rule and the state it went into are known (the states are
@@ -181,7 +192,8 @@ std::string text_report(const TransferCommandArgs& a, const TransferInputs& in, 
     }
     for (std::size_t i = 0; i < t.steps.size() && !in.pddl; ++i) {
         const auto& st = t.steps[i];
-        o += fmt::format("  {}. {}\n     match: {}\n", i + 1, st.target.to_string(),
+        o += fmt::format("  {}. {}\n     match: {}\n", i + 1,
+                         plan::action_step(*t.target_domain.domain, st.target).to_string(),
                          st.target_bindings.empty() ? "(nothing: the map sees no part of its "
                                                       "precondition)"
                                                     : st.target_bindings);
@@ -281,7 +293,7 @@ nlohmann::ordered_json json_report(const TransferCommandArgs& a, const TransferI
     }
     j["source_plan"] = plan_strings(plan::action_plan(*in.problem->domain, in.plan).steps);
     j["source_valid"] = v.source_valid();
-    j["target_plan"] = plan_strings(target_steps(t));
+    j["target_plan"] = plan_strings(target_steps(in, t));
     j["steps"] = steps_json(in, t);
     nlohmann::ordered_json actions = nlohmann::ordered_json::array();
     for (const auto& rule : t.target_domain.domain->rules) {

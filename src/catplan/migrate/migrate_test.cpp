@@ -676,6 +676,19 @@ TEST(CaseStudy, MigratedRuleAndMatch) {
     EXPECT_EQ(kr.parameters[0].name, "block");
     EXPECT_EQ(kr.parameters[0].ob, k.object);
     EXPECT_EQ(kr.parameters[1].ob, k.receptacle);
+    EXPECT_FALSE(kr.action.has_value());
+
+    // The action a rule carries out comes along, each argument now the first migrated parameter
+    // of its name (underblock's Object is parameter 2), so a step still names the action.
+    rewrite::Rule variant = rule;
+    variant.action = rewrite::ActionOf{"take", {{1, {}}, {0, {}}, {-1, "table"}}};
+    auto mv = migrate(m, variant);
+    ASSERT_TRUE(mv) << mv.error();
+    ASSERT_TRUE(mv->action.has_value());
+    EXPECT_EQ(mv->action->name, "take");
+    using Arg = rewrite::ActionOf::Argument;
+    EXPECT_EQ(mv->action->arguments, (std::vector<Arg>{{2, {}}, {0, {}}, {-1, "table"}}));
+    ASSERT_EQ(mv->parameters[2].name, "underblock");
 
     // The match unstack(E, D) in the initial state, migrated, is a match of the migrated rule.
     ACSet x = initial_state(b);

@@ -611,6 +611,31 @@ Result<rewrite::AttrExpr> translate_expr(const SchemaMap& f, const rewrite::Attr
     return out;
 }
 
+/// The action a migrated rule carries out: the source rule's, each parameter argument the first
+/// migrated parameter of its name; nullopt (the rule's own name) when a parameter the action
+/// names is lost, since a step could not say it.
+std::optional<rewrite::ActionOf> migrated_action(const rewrite::Rule& rule,
+                                                 const std::vector<rewrite::Parameter>& migrated) {
+    if (!rule.action) {
+        return std::nullopt;
+    }
+    rewrite::ActionOf out{rule.action->name, {}};
+    for (const auto& a : rule.action->arguments) {
+        if (a.parameter < 0) {
+            out.arguments.push_back(a);
+            continue;
+        }
+        const std::string& name = rule.parameters[static_cast<std::size_t>(a.parameter)].name;
+        auto it = std::find_if(migrated.begin(), migrated.end(),
+                               [&](const rewrite::Parameter& p) { return p.name == name; });
+        if (it == migrated.end()) {
+            return std::nullopt;
+        }
+        out.arguments.push_back({static_cast<int>(it - migrated.begin()), {}});
+    }
+    return out;
+}
+
 } // namespace
 
 Result<rewrite::Rule> migrate(const SchemaMap& f, const rewrite::Rule& rule) {
@@ -659,6 +684,7 @@ Result<rewrite::Rule> migrate(const SchemaMap& f, const rewrite::Rule& rule) {
             }
         }
     }
+    out.action = migrated_action(rule, out.parameters);
     // Expressions, per variable of R, carried to every target type sent to their type.
     out.exprs.assign(t.num_attr_types(), {});
     for (std::uint32_t i = 0; i < t.num_attr_types(); ++i) {
