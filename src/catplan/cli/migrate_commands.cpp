@@ -8,6 +8,7 @@
 #include "catplan/json/json.hpp"
 #include "catplan/migrate/migration.hpp"
 #include "catplan/migrate/sigma.hpp"
+#include "catplan/transfer/transfer.hpp"
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
@@ -90,8 +91,49 @@ int cmd_migrate(const MigrateArgs& a, std::ostream& out, std::ostream& err) {
 }
 
 struct MigrateDomainArgs {
-    std::string file, map, domain, format = "text";
+    std::string file, map, domain, output, format = "text";
 };
+
+// --format cp: the target schema and the migrated domain as a file of the language, loadable
+// again (the rules that did not migrate named in comments); exit 3 when one did not migrate, and
+// nothing written when the language cannot write one of them.
+int migrated_domain_file(const MigrateDomainArgs& a, const migrate::SchemaMap& f,
+                         const plan::Domain& d, std::ostream& out, std::ostream& err) {
+    auto md = transfer::migrate_domain(f, d);
+    for (const auto& rule : md.domain->rules) {
+        // A conjunctive map may send one parameter to parts of several target objects, which the
+        // language's parameter list cannot say (one generator per parameter).
+        const auto& ps = rule->parameters;
+        for (std::size_t i = 1; i < ps.size(); ++i) {
+            if (ps[i].name == ps[i - 1].name) {
+                error(err, fmt::format("the domain {} migrated along {} cannot be written as a .cp "
+                                       "file: the migrated rule '{}' binds its parameter '{}' to "
+                                       "a part of {} and one of {}, and a parameter of the "
+                                       "language names one part",
+                                       a.domain, a.map, rule->name, ps[i].name,
+                                       f.target()->ob(ps[i - 1].ob).name,
+                                       f.target()->ob(ps[i].ob).name));
+                return kUnsupported;
+            }
+        }
+    }
+    auto domain = lang::print_domain(*md.domain);
+    if (!domain) {
+        error(err, fmt::format("the domain {} migrated along {} cannot be written as a .cp file: "
+                               "{}",
+                               a.domain, a.map, domain.error()));
+        return kUnsupported;
+    }
+    std::string text = fmt::format("# The domain {} of {} migrated along {} (catplan "
+                                   "migrate-domain): Δ_F of each rule, on {}.\n",
+                                   a.domain, a.file, a.map, f.target()->name());
+    for (const auto& [rule, why] : md.failures) {
+        text += fmt::format("# not migrated: {}: {}\n", rule, why);
+    }
+    text += "\n" + lang::print_schema(*f.target()) + "\n" + *domain;
+    int rc = emit(text, a.output, out, err);
+    return rc != kOk ? rc : md.failures.empty() ? kOk : kUnsupported;
+}
 
 int cmd_migrate_domain(const MigrateDomainArgs& a, std::ostream& out, std::ostream& err) {
     Session s;
@@ -108,6 +150,9 @@ int cmd_migrate_domain(const MigrateDomainArgs& a, std::ostream& out, std::ostre
         error(err, fmt::format("domain '{}' is on schema {}, but map '{}' migrates {}", a.domain,
                                d->schema->name(), a.map, f->source()->name()));
         return kBadInput;
+    }
+    if (a.format == "cp") {
+        return migrated_domain_file(a, *f, *d->domain, out, err);
     }
     bool json = a.format == "json";
     nlohmann::ordered_json doc = {
@@ -182,9 +227,12 @@ void add_migrate_commands(CLI::App& app, CommandTable& table) {
         ->required();
     domain_cmd
         ->add_option("--format", domain_args->format,
-                     "text (tables) or json (each rule's Pre, Keep and Eff as Catlab's ACSet JSON)")
-        ->check(CLI::IsMember({"text", "json"}))
+                     "text (tables), json (each rule's Pre, Keep and Eff as Catlab's ACSet JSON) "
+                     "or cp (the target schema and the migrated domain, a file catplan loads)")
+        ->check(CLI::IsMember({"text", "json", "cp"}))
         ->capture_default_str();
+    domain_cmd->add_option("-o,--output", domain_args->output,
+                           "write to this file instead of stdout (atomically)");
     table.add(domain_cmd, [domain_args](std::ostream& o, std::ostream& e) {
         return cmd_migrate_domain(*domain_args, o, e);
     });
