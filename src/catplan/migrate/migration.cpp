@@ -638,6 +638,43 @@ std::optional<rewrite::ActionOf> migrated_action(const rewrite::Rule& rule,
 
 } // namespace
 
+std::vector<ObId> migrate_relations(const SchemaMap& f, const std::vector<ObId>& relations) {
+    const schema::Schema& t = *f.target();
+    const schema::Schema& s = *f.source();
+    std::vector<ObId> out;
+    for (std::uint32_t c = 0; c < t.num_obs(); ++c) {
+        const Query& q = f.query(ObId(c));
+        if (!q.is_plain() ||
+            std::find(relations.begin(), relations.end(), q.nodes()[0].ob) == relations.end()) {
+            continue;
+        }
+        ObId d = q.nodes()[0].ob;
+        std::vector<HomId> covered;
+        bool ok = true;
+        for (std::uint32_t g = 0; g < t.num_homs() && ok; ++g) {
+            if (t.hom(HomId(g)).dom != ObId(c)) {
+                continue;
+            }
+            const auto& path = f.hom_image(HomId(g)).path;
+            ok = path && path->size() == 1;
+            if (ok) {
+                covered.push_back(path->front());
+            }
+        }
+        for (std::uint32_t h = 0; h < s.num_homs() && ok; ++h) {
+            ok = s.hom(HomId(h)).dom != d ||
+                 std::find(covered.begin(), covered.end(), HomId(h)) != covered.end();
+        }
+        for (std::uint32_t a = 0; a < s.num_attrs() && ok; ++a) {
+            ok = s.attr(AttrId(a)).dom != d;
+        }
+        if (ok) {
+            out.push_back(ObId(c));
+        }
+    }
+    return out;
+}
+
 Result<rewrite::Rule> migrate(const SchemaMap& f, const rewrite::Rule& rule) {
     const schema::Schema& t = *f.target();
     rewrite::Rule out(f.target());
@@ -685,6 +722,7 @@ Result<rewrite::Rule> migrate(const SchemaMap& f, const rewrite::Rule& rule) {
         }
     }
     out.action = migrated_action(rule, out.parameters);
+    out.relations = migrate_relations(f, rule.relations);
     // Expressions, per variable of R, carried to every target type sent to their type.
     out.exprs.assign(t.num_attr_types(), {});
     for (std::uint32_t i = 0; i < t.num_attr_types(); ++i) {

@@ -86,6 +86,13 @@ Result<ACSetMorphism> migrate(const SchemaMap& f, const ACSetMorphism& alpha, co
 /// no target attribute type is sent to is a Failure).
 Result<rewrite::Rule> migrate(const SchemaMap& f, const rewrite::Rule& rule);
 
+/// The target objects whose parts are facts as those of the source relations are (the migrated
+/// rule's Rule::relations): each a plain entry on a relation without attributes whose every hom is
+/// the one-hom image of a hom of the target object, so that two target parts with equal values
+/// come from one source fact. Where an argument is forgotten, Δ_F keeps two facts that agree on
+/// the rest, and the target object is not a relation.
+std::vector<ObId> migrate_relations(const SchemaMap& f, const std::vector<ObId>& relations);
+
 /// Δ_F of a match m : L -> X of rule: the morphism Δ_F(L) -> Δ_F(X).
 Result<ACSetMorphism> migrate_match(const SchemaMap& f, const rewrite::Rule& rule,
                                     const ACSetMorphism& m, const ACSet& x);

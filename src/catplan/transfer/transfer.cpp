@@ -553,6 +553,30 @@ std::string not_delta(const SchemaMap& f) {
     return "it is not a delta map";
 }
 
+// Why a rule that holds each fact of its relations once (a DPO step followed by merging an
+// added fact into an equal one) does not commute with Δ_F: a target object on one of its
+// relations that is not a relation of the target (it forgets an argument); "" when none.
+std::string facts_kept(const SchemaMap& f, const rewrite::Rule& rule) {
+    if (rule.relations.empty()) {
+        return "";
+    }
+    auto kept = migrate::migrate_relations(f, rule.relations);
+    const auto& t = *f.target();
+    for (std::uint32_t c = 0; c < t.num_obs(); ++c) {
+        const auto& q = f.query(ObId(c));
+        if (!q.is_plain() || std::find(rule.relations.begin(), rule.relations.end(),
+                                       q.nodes()[0].ob) == rule.relations.end()) {
+            continue;
+        }
+        if (std::find(kept.begin(), kept.end(), ObId(c)) == kept.end()) {
+            return fmt::format("rule {} holds each {} fact once and the target's {} does not "
+                               "see all of its arguments: Δ_F may hold one fact twice",
+                               rule.name, f.source()->ob(q.nodes()[0].ob).name, t.ob(ObId(c)).name);
+        }
+    }
+    return "";
+}
+
 // The claim of Appendix A and its hypotheses: Δ_F preserves pushouts for a delta map, so each
 // migrated DPO step at a monic match applies and Y_i = Δ_F(X_i), and the goal of a valid source
 // plan embeds. An application condition is not preserved (Δ_F is not full: the migrated NAC may
@@ -564,11 +588,14 @@ Claim valid_by_construction(const SchemaMap& f, const TransferResult& out,
     bool delta = out.migration == MigrationKind::Delta;
     c.hypotheses.push_back(
         {"F is a delta map (Δ_F preserves pushouts)", delta, delta ? "" : not_delta(f)});
-    std::string conditions, spo;
+    std::string conditions, spo, facts;
     for (const auto& step : plan.steps) {
         const auto* rule = problem.domain->find_rule(step.action);
         if (rule == nullptr) {
             continue;
+        }
+        if (facts.empty()) {
+            facts = facts_kept(f, *rule);
         }
         if (conditions.empty() && !rule->conditions.empty()) {
             conditions = fmt::format("rule {} has a {} application condition", rule->name,
@@ -582,6 +609,9 @@ Claim valid_by_construction(const SchemaMap& f, const TransferResult& out,
                             "preserve them)",
                             conditions.empty(), conditions});
     c.hypotheses.push_back({"every rule the plan uses is a DPO rule", spo.empty(), spo});
+    c.hypotheses.push_back({"each object whose facts a rule the plan uses holds once is sent to "
+                            "facts held once in the target (Δ_F keeps each fact once)",
+                            facts.empty(), facts});
     std::string not_monic;
     for (std::size_t i = 0; i < out.steps.size() && not_monic.empty(); ++i) {
         for (auto component : out.steps[i].source_match.components) {
