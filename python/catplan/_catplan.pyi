@@ -1,5 +1,6 @@
 """Type stubs of catplan's extension module (the C++ library bound with pybind11)."""
 
+import os
 from typing import Any, Callable, Dict, Iterable, Iterator, List, Optional, Sequence, Tuple, Union
 
 Value = Union[bool, int, float, str, "Var", None]
@@ -526,7 +527,7 @@ def transfer(map: Map, problem: Problem, plan: PlanLike, *, goal: Optional[State
              goal_name: str = "", rename_by_type: bool = False,
              keep_states: bool = False, replan: bool = False, search: str = "bfs",
              heuristic: str = "hff", max_nodes: int = 0, max_time: float = 60.0) -> Transfer: ...
-def transfer_pddl(module: Module, map: str, problem: str,
+def transfer_pddl(module: Module, map: str, problem: Union[str, "os.PathLike[str]"],
                   plan: Union[str, Sequence[Tuple[str, Sequence[str]]]], *,
-                  target_problem: Optional[str] = None,
+                  target_problem: Optional[Union[str, "os.PathLike[str]"]] = None,
                   keep_states: bool = False) -> PddlTransfer: ...

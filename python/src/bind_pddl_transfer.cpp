@@ -29,7 +29,18 @@ struct PyPddlTransfer {
     pddl_transfer::Checks checks;
 };
 
-/// A file of the module's sources (the path as given); CatplanError when it cannot be read.
+/// The module's sources, copied with the same file ids: a transfer's problem and plan are read
+/// into the copy, so that the module is not changed (it may be used from other threads) and does
+/// not grow with each call, while diagnostics in the imported domains still render.
+SourceManager copy_of(const SourceManager& s) {
+    SourceManager out;
+    for (std::uint32_t i = 0; i < s.num_files(); ++i) {
+        out.add_buffer(std::string(s.name(i)), std::string(s.text(i)));
+    }
+    return out;
+}
+
+/// A file read into sources (the path as given); CatplanError when it cannot be read.
 std::uint32_t add_file(SourceManager& sources, const std::string& path) {
     auto f = sources.add_file(path);
     if (!f) {
@@ -38,19 +49,24 @@ std::uint32_t add_file(SourceManager& sources, const std::string& path) {
     return *f;
 }
 
-PyPddlTransfer transfer_pddl(const PyModule& m, const std::string& map, const std::string& problem,
-                             const py::handle& plan_obj,
-                             const std::optional<std::string>& target_problem, bool keep_states) {
+/// A path given as str or os.PathLike.
+std::string path_arg(const py::handle& p) {
+    return py::module_::import("os").attr("fspath")(p).cast<std::string>();
+}
+
+PyPddlTransfer transfer_pddl(const PyModule& m, const std::string& map, const py::handle& problem,
+                             const py::handle& plan_obj, const py::handle& target_problem,
+                             bool keep_states) {
     const lang::Declaration* d = m.module.find(map);
     if (d == nullptr || d->kind != lang::DeclKind::Map) {
         throw py::key_error("no map named '" + map + "' in the module");
     }
-    SourceManager& sources = *m.sources;
+    SourceManager sources = copy_of(*m.sources);
     DiagnosticSink sink(sources);
-    std::uint32_t problem_file = add_file(sources, problem);
+    std::uint32_t problem_file = add_file(sources, path_arg(problem));
     std::optional<std::uint32_t> target_file;
-    if (target_problem) {
-        target_file = add_file(sources, *target_problem);
+    if (!target_problem.is_none()) {
+        target_file = add_file(sources, path_arg(target_problem));
     }
     // The plan is read from text, so that its errors point into it.
     std::string text = py::isinstance<py::str>(plan_obj)
@@ -67,7 +83,6 @@ PyPddlTransfer transfer_pddl(const PyModule& m, const std::string& map, const st
             plan = pddl_transfer::read_plan(*setting, plan_file, sources, sink);
         }
         if (!setting || !plan) {
-            py::gil_scoped_acquire acquire;
             throw error_from(sources, sink);
         }
         r.setting = std::make_shared<const pddl_transfer::Setting>(std::move(*setting));
@@ -246,7 +261,7 @@ problem found.)doc")
           py::arg("keep_states") = false,
           R"doc(Transfers a plan of a PDDL problem along the module's map, as `catplan transfer
 MAP.cp --map MAP --problem P.pddl --plan sas_plan` does: the module's file imports the source
-(and target) PDDL domains, problem is the path of a PDDL problem of the source domain, plan an
+(and target) PDDL domains, problem is the path (str or os.PathLike) of a PDDL problem of the source domain, plan an
 IPC plan (its text, as Fast Downward writes it, '; cost' line and all, or a list of (action,
 [args])). Each source step becomes the target action that is Δ_F of its action, or is repaired
 with the target's own actions. target_problem, the path of the user's own target problem, is

@@ -36,8 +36,8 @@ def test_moves_are_repaired_into_four_operator_steps(blocks, source_dir):
 def test_delta_map_steps_correspond_and_the_users_problem_is_compared(warehouse, source_dir):
     d = source_dir / "examples/pddl/warehouse"
     plan = catplan.parse_ipc_plan((d / "warehouse-3.plan").read_text())
-    r = catplan.transfer_pddl(warehouse, "HospitalToWarehouse", str(d / "warehouse-3.pddl"),
-                              plan, target_problem=str(d / "hospital-3.pddl"))
+    r = catplan.transfer_pddl(warehouse, "HospitalToWarehouse", d / "warehouse-3.pddl", plan,
+                              target_problem=d / "hospital-3.pddl")
     assert r.valid
     assert {s.kind for s in r.steps} == {"corresponds"}
     assert r.steps[0].action == "collect" and len(r.steps[0].target) == 1
