@@ -117,9 +117,8 @@ std::vector<PyPddlStep> pddl_steps(const PyPddlTransfer& r) {
         p.source = ipc_tuple(r.plan[i]);
         p.kind = std::string(transfer::to_string(s.kind));
         for (const auto& step : s.target_steps) {
-            auto ipc = st.target ? pddl::to_ipc_plan(*st.target, plan::Plan{{step}})
-                                 : Result<pddl::IpcPlan>(Failure{"not a PDDL target"});
-            p.target.append(ipc ? ipc_tuple((*ipc)[0]) : py::make_tuple(step.action, step.args));
+            auto ipc = pddl_transfer::ipc_step(st, step);
+            p.target.append(ipc ? ipc_tuple(*ipc) : py::make_tuple(step.action, step.args));
         }
         if (s.kind == transfer::StepTransfer::Kind::Corresponds) {
             p.action = st.actions->name_of(s.target.action);
@@ -129,6 +128,11 @@ std::vector<PyPddlStep> pddl_steps(const PyPddlTransfer& r) {
         out.push_back(std::move(p));
     }
     return out;
+}
+
+/// The transfer is valid and the PDDL side's checks pass.
+bool all_valid(const PyPddlTransfer& r) {
+    return r.transfer.t->verdict.valid() && r.checks.ok(*r.transfer.t);
 }
 
 std::optional<std::int64_t> cost_total(const std::optional<pddl::PlanCost>& c) {
@@ -184,10 +188,7 @@ problem found.)doc")
             "transfer", [](const PyPddlTransfer& r) { return r.transfer; },
             "The Transfer: verdict, steps with their matches, states with keep_states.")
         .def_property_readonly(
-            "valid",
-            [](const PyPddlTransfer& r) {
-                return r.transfer.t->verdict.valid() && r.checks.ok(*r.transfer.t);
-            },
+            "valid", &all_valid,
             "The transfer is valid, the PDDL validator accepts the target plan and the target "
             "problem, when given, starts in Δ_F(I).")
         .def_property_readonly("steps", &pddl_steps, "Per source step, what it became.")
@@ -244,10 +245,7 @@ problem found.)doc")
         .def_property_readonly("comparison", &comparison,
                                "With target_problem: a dict with name, same, only_in_migrated "
                                "and only_in_target_problem (else None).")
-        .def("__bool__",
-             [](const PyPddlTransfer& r) {
-                 return r.transfer.t->verdict.valid() && r.checks.ok(*r.transfer.t);
-             })
+        .def("__bool__", &all_valid)
         .def("__repr__", [](const PyPddlTransfer& r) {
             return "<PddlTransfer " + r.transfer.map.name + ": " +
                    std::to_string(r.transfer.t->steps.size()) + " source steps, " +

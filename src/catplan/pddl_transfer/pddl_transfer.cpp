@@ -156,12 +156,17 @@ transfer::TransferOptions transfer_options(const Setting& s) {
     return o;
 }
 
-std::string ipc_text(const Setting& s, const plan::Step& step) {
+std::optional<pddl::IpcStep> ipc_step(const Setting& s, const plan::Step& step) {
     if (s.target == nullptr) {
-        return step.to_string();
+        return std::nullopt;
     }
     auto ipc = pddl::to_ipc_plan(*s.target, plan::Plan{{step}});
-    return ipc ? (*ipc)[0].to_string() : step.to_string();
+    return ipc ? std::optional((*ipc)[0]) : std::nullopt;
+}
+
+std::string ipc_text(const Setting& s, const plan::Step& step) {
+    auto ipc = ipc_step(s, step);
+    return ipc ? ipc->to_string() : step.to_string();
 }
 
 bool Checks::ok(const transfer::TransferResult& t) const {

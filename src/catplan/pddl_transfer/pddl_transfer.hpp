@@ -59,6 +59,9 @@ plan::Plan source_plan(const Setting& s, const pddl::IpcPlan& plan);
 /// The transfer options the setting fixes: the goal judged by and the target's own actions.
 transfer::TransferOptions transfer_options(const Setting& s);
 
+/// A target step as a step of the target's PDDL action, or nullopt when the target is not PDDL.
+std::optional<pddl::IpcStep> ipc_step(const Setting& s, const plan::Step& step);
+
 /// A target step in IPC form, `(stack b a)` (the rule step when the target is not PDDL).
 std::string ipc_text(const Setting& s, const plan::Step& step);
 
