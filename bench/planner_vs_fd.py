@@ -2,7 +2,7 @@
 """catplan plan beside Fast Downward (and pyperplan) on the same problems, in one run.
 
     planner_vs_fd.py --catplan BUILD/catplan --peers ../shared/peers --out DIR [--limit 60]
-                     [--series ipc,blocks,perstate] [--pyperplan] [--only DOMAIN,...]
+                     [--series ipc,blocks,perstate,costs] [--pyperplan] [--only DOMAIN,...]
                      [--per-domain N] [--blocks 20,24,...] [--perstate 30] [--repeat 3]
 
 Writes the problems (bench/pddl/generate.py: the IPC-style series, and seeded blocksworlds of 20 to
@@ -13,6 +13,9 @@ failure. Prints a Markdown table per series, coverage, medians and the ratios ca
 writes the raw rows to DIR/results.json.
 
 Series:
+  costs     transport problems whose drives cost the road's length (generate.COST_SIZES):
+            catplan --search astar (A* summing costs, lmcut) beside FD astar(lmcut()); both are
+            optimal, so the plan costs must be equal, and the table says where they are;
   ipc       the first N problems of each IPC-style domain: catplan (default configuration, lama)
             beside FD lama-first, and pyperplan (gbfs, hff) with --pyperplan;
   blocks    seeded blocksworlds (random initial and goal towers, seed 7000 + n): catplan beside
@@ -68,6 +71,15 @@ def write_problems(out, series, only, per_domain, blocks, perstate):
                 path.write_text(generate.GENERATORS[domain](size, rng, f"{domain}-p{i:02d}"))
                 problems.append(("ipc", domain, f"p{i:02d}", HERE / "pddl/domains" / f"{domain}.pddl",
                                  path))
+    if "costs" in series:
+        for domain, sizes in generate.COST_SIZES.items():
+            for i, size in enumerate(sizes, 1):
+                path = out / "problems" / domain / f"p{i:02d}.pddl"
+                path.parent.mkdir(parents=True, exist_ok=True)
+                rng = random.Random(1000 * i + len(domain))
+                path.write_text(generate.GENERATORS[domain](size, rng, f"{domain}-p{i:02d}"))
+                problems.append(("costs", domain, f"p{i:02d}",
+                                 HERE / "pddl/domains" / f"{domain}.pddl", path))
     if "blocks" in series:
         for n in blocks:
             problems.append(("blocks", "blocksworld", f"{n} blocks", BLOCKS_DOMAIN,
@@ -106,6 +118,12 @@ def plan_steps(path):
     if not path.exists():
         return None
     return sum(1 for line in path.read_text().splitlines() if line.strip().startswith("("))
+
+
+def plan_cost(path):
+    """The cost on the plan's last line, as both planners write it: "; cost = 45 (general cost)"."""
+    found = re.search(r"; cost = (\d+)", path.read_text()) if path.exists() else None
+    return int(found.group(1)) if found else None
 
 
 def validate(args, domain, problem, plan):
@@ -168,6 +186,15 @@ def planners(args, series):
         return [fd, "--overall-time-limit", limit, "--plan-file", "plan.txt", str(d), str(p),
                 "--search", "eager_greedy([ff()])"]
 
+    def astar_lmcut(d, p):
+        return [fd, "--overall-time-limit", limit, "--plan-file", "plan.txt", str(d), str(p),
+                "--search", "astar(lmcut())"]
+
+    if series == "costs":
+        return [
+            ("catplan astar lmcut", catplan("--search", "astar"), "plan.txt", catplan_stats),
+            ("FD astar(lmcut())", astar_lmcut, "plan.txt", fd_stats),
+        ]
     if series == "perstate":
         return [
             ("catplan gbfs hff", catplan("--search", "gbfs", "--heuristic", "hff"), "plan.txt",
@@ -205,6 +232,7 @@ def run_all(args, problems):
                 ok_cat, ok_val = validate(args, dfile, pcopy, plan)
             row = dict(series=series, domain=domain, problem=name, planner=planner,
                        wall=p["wall"], mb=p["mb"], cpu=p["cpu"], exit=p["exit"], steps=steps,
+                       cost=plan_cost(plan) if steps is not None else None,
                        catplan_valid=ok_cat, val_valid=ok_val,
                        solved=steps is not None and ok_cat and ok_val, **parse(p))
             rows.append(row)
@@ -223,7 +251,8 @@ def cell(row):
             return "INVALID PLAN"
         return "not solved" if row["exit"] == 0 else f"not solved (exit {row['exit']})"
     exp = f", {row['expanded']} exp." if row.get("expanded") is not None else ""
-    return f"{row['wall']:.2f} s, {row['mb']:.0f} MB, {row['steps']} steps{exp}"
+    cost = f", cost {row['cost']}" if row["series"] == "costs" else ""
+    return f"{row['wall']:.2f} s, {row['mb']:.0f} MB, {row['steps']} steps{cost}{exp}"
 
 
 def table(rows, series, names):
@@ -252,6 +281,14 @@ def table(rows, series, names):
         medmb = statistics.median(r["mb"] for r in solved) if solved else float("nan")
         out.append(f"- {n}: solved {len(solved)} of {len(mine)}; median time of the solved "
                    f"{med:.2f} s, median peak memory {medmb:.0f} MB")
+    if series == "costs":
+        both = [(by[names[0]], by[names[1]]) for by in (
+            {r["planner"]: r for r in rows if r["series"] == series and
+             (r["domain"], r["problem"]) == key} for key in keys)
+            if all(n in by and by[n]["solved"] for n in names)]
+        same = sum(1 for a, b in both if a["cost"] == b["cost"])
+        out.append(f"- plan cost the same in both (both optimal): {same} of {len(both)} solved by "
+                   "both")
     if ratios:
         out.append(f"- {names[0]} / {names[1]} whole-process time where both solved "
                    f"({len(ratios)}): median {statistics.median(ratios):.2f}, min "

@@ -13,12 +13,13 @@ import random
 import sys
 
 
-def problem(domain, name, objects, init, goal):
+def problem(domain, name, objects, init, goal, metric=False):
     objs = "\n    ".join(f"{' '.join(names)} - {t}" for t, names in objects if names)
     init_s = "\n    ".join(init)
     goal_s = "\n      ".join(goal)
+    metric_s = "\n  (:metric minimize (total-cost))" if metric else ""
     return (f"(define (problem {name}) (:domain {domain})\n  (:objects\n    {objs})\n"
-            f"  (:init\n    {init_s})\n  (:goal (and\n      {goal_s})))\n")
+            f"  (:init\n    {init_s})\n  (:goal (and\n      {goal_s})){metric_s})\n")
 
 
 def towers(blocks, rng):
@@ -307,6 +308,38 @@ def freecell(size, rng, name):
 
 
 # Sizes per domain, smallest first: the first few problems of an IPC-style series.
+def transport(size, rng, name):
+    """A ring of locations with random chords, lengths 1 to 20 (both ways alike), trucks and
+    packages at random places, each package bound elsewhere."""
+    locations, trucks, packages = size
+    locs = [f"l{i}" for i in range(1, locations + 1)]
+    edges = {(i, (i + 1) % locations) for i in range(locations)}
+    while len(edges) < 2 * locations:
+        a, b = rng.sample(range(locations), 2)
+        if (b, a) not in edges:
+            edges.add((a, b))
+    init = ["(= (total-cost) 0)"]
+    for a, b in sorted(edges):
+        length = rng.randint(1, 20)
+        for x, y in ((a, b), (b, a)):
+            init += [f"(road {locs[x]} {locs[y]})", f"(= (road-length {locs[x]} {locs[y]}) {length})"]
+    ts = [f"t{i}" for i in range(1, trucks + 1)]
+    ps = [f"p{i}" for i in range(1, packages + 1)]
+    init += [f"(at {t} {rng.choice(locs)})" for t in ts]
+    goal = []
+    for p in ps:
+        start, end = rng.sample(locs, 2)
+        init.append(f"(at {p} {start})")
+        goal.append(f"(at {p} {end})")
+    return problem("transport", name, [("location", locs), ("truck", ts), ("package", ps)], init,
+                   goal, metric=True)
+
+
+# Domains whose actions cost what the problem says: their own series (planner_vs_fd.py costs).
+COST_SIZES = {
+    "transport": [(6, 1, 2), (6, 2, 3), (8, 2, 3), (8, 2, 4), (10, 2, 4), (10, 3, 5)],
+}
+
 SIZES = {
     "blocksworld": [(n,) for n in (6, 8, 10, 12)],
     "gripper": [(n,) for n in (4, 6, 8, 10)],
@@ -322,7 +355,7 @@ SIZES = {
     "freecell": [(2, 2, 2, 2), (2, 3, 3, 2), (2, 4, 3, 2), (3, 3, 3, 2)],
 }
 
-GENERATORS = {name: globals()[name] for name in SIZES}
+GENERATORS = {name: globals()[name] for name in [*SIZES, *COST_SIZES]}
 
 
 def main():

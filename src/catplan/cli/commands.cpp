@@ -269,6 +269,14 @@ std::string plan_summary(const plan::SearchResult& r, const std::string& search,
         text +=
             fmt::format("{}anytime: {} plans found, the shortest kept\n", comment, r.stats.plans);
     }
+    if (r.uncosted > 0) {
+        text += fmt::format("{}{} ground action{} left out: the problem gives {} step no cost\n",
+                            comment, r.uncosted, r.uncosted == 1 ? " was" : "s were",
+                            r.uncosted == 1 ? "its" : "their");
+    }
+    if (!r.costs_ignored.empty()) {
+        text += fmt::format("{}note: every step counted as 1: {}\n", comment, r.costs_ignored);
+    }
     if (!r.caveat.empty()) {
         text += fmt::format("{}note: {}\n", comment, r.caveat);
     }
@@ -283,9 +291,13 @@ nlohmann::ordered_json plan_json(const plan::SearchResult& r, const std::string&
         j["plan"] = std::move(steps);
         j["optimal"] = r.optimal;
     }
-    j["search"] = {{"name", search},   {"config", r.config},
-                   {"path", r.path},   {"reason", r.path_reason},
-                   {"exits", r.exits}, {"exit_example", r.exit_example}};
+    j["search"] = {{"name", search},        {"config", r.config},
+                   {"path", r.path},        {"reason", r.path_reason},
+                   {"exits", r.exits},      {"exit_example", r.exit_example},
+                   {"sums_costs", r.costs}, {"uncosted_actions", r.uncosted}};
+    if (!r.costs_ignored.empty()) {
+        j["search"]["costs_ignored"] = r.costs_ignored;
+    }
     if (!r.caveat.empty()) {
         j["search"]["caveat"] = r.caveat;
     }

@@ -372,11 +372,11 @@ nlohmann::ordered_json ipc_validation_json(const Session& s, const pddl::Import&
 }
 
 /// The plan's cost as the plan file's last line says it (when `written` to a file), and whether
-/// the search's "optimal" holds for it: the planner counts every step as 1 (docs/planner.md).
-std::string cost_summary(const pddl::PlanCost& cost, bool written, bool optimal) {
+/// the search's "optimal" holds for it: only A* sums costs (docs/planner.md).
+std::string cost_summary(const pddl::PlanCost& cost, bool written, const plan::SearchResult& r) {
     // The plan's own last line says its cost, unless the plan went to a file.
     std::string out = written ? "; plan cost: " + pddl::describe_cost(cost) + "\n" : "";
-    if (!cost.unit && optimal) {
+    if (!cost.unit && r.optimal && !r.costs) {
         out += "; the search counted every step as 1: the plan is shortest, its cost may not be "
                "the least\n";
     }
@@ -483,8 +483,8 @@ int pddl_plan(const std::vector<std::string>& files, const plan::SearchOptions& 
         ipc = std::move(*converted);
         cost = pddl::plan_cost(im->pddl_domain, *im->pddl_problem, *ipc);
         if (!cost.undefined.empty()) {
-            // The search does not read costs (docs/planner.md), so it may take such a step.
-            error(err, fmt::format("the plan found is not valid: {} (catplan's planner does not "
+            // The grounded search leaves such steps out; the C-set search does not read costs.
+            error(err, fmt::format("the plan found is not valid: {} (the C-set search does not "
                                    "read costs, so it cannot avoid a step without one)",
                                    cost.undefined));
             return kUnsupported;
@@ -505,7 +505,7 @@ int pddl_plan(const std::vector<std::string>& files, const plan::SearchOptions& 
         auto j = plan_json(r, search, std::move(steps), timing);
         j["cost"] = ipc ? nlohmann::ordered_json(cost.total) : nlohmann::ordered_json(nullptr);
         j["unit_cost"] = pddl::unit_cost(im->pddl_domain, *im->pddl_problem);
-        if (!j["unit_cost"].get<bool>()) {
+        if (!j["unit_cost"].get<bool>() && !r.costs && r.plan) {
             j["optimal"] = false; // the search counted steps, not costs
         }
         out << j.dump(2) << "\n";
@@ -513,7 +513,7 @@ int pddl_plan(const std::vector<std::string>& files, const plan::SearchOptions& 
     }
     out << text << plan_summary(r, search, ipc ? ipc->size() : 0, timing, "; ");
     if (ipc) {
-        out << cost_summary(cost, text.empty(), r.optimal);
+        out << cost_summary(cost, text.empty(), r);
     }
     return rc;
 }

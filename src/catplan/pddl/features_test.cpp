@@ -180,6 +180,62 @@ TEST(PddlCosts, ThePlannerCountsStepsAndThePlanIsCosted) {
     EXPECT_TRUE(has(write_ipc_plan(*ipc, c), "(general cost)"));
 }
 
+TEST(PddlCosts, AStarSumsTheCostsAndFindsTheCheapestPlan) {
+    auto l = load("roads-domain.pddl", "roads-p01.pddl");
+    ASSERT_TRUE(l->import) << l->errors();
+    auto costed = [&](const plan::SearchResult& r) {
+        auto ipc = to_ipc_plan(*l->import, *r.plan);
+        EXPECT_TRUE(ipc.has_value());
+        return plan_cost(*l->domain, *l->problem, *ipc);
+    };
+    plan::SearchOptions astar;
+    astar.search = plan::SearchKind::AStar;
+    auto r = plan::find_plan(*l->import->problem, astar);
+    ASSERT_EQ(r.status, plan::SearchStatus::Solved);
+    EXPECT_EQ(r.path, "grounded");
+    EXPECT_TRUE(r.costs);
+    EXPECT_TRUE(r.optimal);
+    EXPECT_TRUE(has(r.config, "summing action costs")) << r.config;
+    // a-b-c-d (3 + 4 + 5), not the road a-d (20), nor a-e-d: a-e has no length, so no cost.
+    EXPECT_EQ(r.plan->to_string(), "drive(t1, a, b)\ndrive(t1, b, c)\ndrive(t1, c, d)\n");
+    EXPECT_EQ(costed(r).total, 12);
+    EXPECT_EQ(r.uncosted, 1U);
+    for (auto h : {plan::HeuristicKind::HMax, plan::HeuristicKind::Blind}) {
+        astar.heuristic = h;
+        auto again = plan::find_plan(*l->import->problem, astar);
+        ASSERT_TRUE(again.plan);
+        EXPECT_EQ(costed(again).total, 12) << again.config;
+    }
+    // Breadth-first search counts steps: the shortest plan, which is not the cheapest.
+    plan::SearchOptions bfs;
+    bfs.search = plan::SearchKind::BreadthFirst;
+    auto shortest = plan::find_plan(*l->import->problem, bfs);
+    ASSERT_TRUE(shortest.plan);
+    EXPECT_EQ(costed(shortest).total, 20);
+    EXPECT_FALSE(shortest.costs);
+    EXPECT_FALSE(shortest.optimal);
+    // The greedy default never takes the road without a cost.
+    auto lama = plan::find_plan(*l->import->problem, {});
+    ASSERT_TRUE(lama.plan);
+    EXPECT_TRUE(costed(lama).undefined.empty());
+}
+
+TEST(PddlCosts, AStarOnTheLiftTableIsCheapest) {
+    auto l = load("lift-domain.pddl", "lift-p01.pddl");
+    ASSERT_TRUE(l->import) << l->errors();
+    plan::SearchOptions astar;
+    astar.search = plan::SearchKind::AStar;
+    auto r = plan::find_plan(*l->import->problem, astar);
+    ASSERT_TRUE(r.plan);
+    EXPECT_TRUE(r.optimal && r.costs);
+    auto ipc = to_ipc_plan(*l->import, *r.plan);
+    ASSERT_TRUE(ipc.has_value());
+    auto v = validate_ipc_plan(*l->import, *ipc);
+    ASSERT_TRUE(v.valid) << v.reason;
+    // lift-p01.plan costs 19 (slow0 carries ann up for 6, fast0 brings bob down for 13).
+    EXPECT_EQ(v.cost.total, 19);
+}
+
 // ---- types --------------------------------------------------------------------------------------
 
 TEST(PddlTypes, ATypeListedTwiceHasBothParentsAndAnEitherIsAType) {

@@ -1,10 +1,15 @@
 #include "catplan/pddl/import.hpp"
 
+#include "catplan/pddl/costs.hpp"
+#include "catplan/pddl/ipc_plan.hpp"
+#include "catplan/plan/actions.hpp"
 #include "catplan/schema/schema.hpp"
 
 #include <algorithm>
 #include <fmt/format.h>
+#include <functional>
 #include <map>
+#include <memory>
 #include <set>
 #include <unordered_map>
 
@@ -386,6 +391,23 @@ std::vector<TypedName> mentioned(const Domain& d, const Problem& p,
     return out;
 }
 
+/// What a step of a rule costs under the problem's metric (costs.hpp), for a search that sums
+/// costs; unset when every step costs 1.
+std::function<std::optional<std::int64_t>(const rewrite::Rule&, const std::vector<std::string>&)>
+step_costs(const Domain& domain, const Problem& problem) {
+    if (unit_cost(domain, problem)) {
+        return {};
+    }
+    auto d = std::make_shared<const Domain>(domain);
+    auto p = std::make_shared<const Problem>(problem);
+    return [d, p](const rewrite::Rule& rule,
+                  const std::vector<std::string>& args) -> std::optional<std::int64_t> {
+        plan::Step a = plan::action_step(rule, plan::Step{rule.name, args, {}});
+        auto c = step_cost(*d, *p, IpcStep{std::move(a.action), std::move(a.args), {}});
+        return c ? std::optional<std::int64_t>(*c) : std::nullopt;
+    };
+}
+
 /// im with the problem's states (on im's domain): the goal of its positive literals, and one
 /// goal condition per negative literal (the goal with that fact, which must not extend).
 void add_problem(Import& im, const Problem& problem) {
@@ -423,6 +445,7 @@ void add_problem(Import& im, const Problem& problem) {
         p->goal_conditions.push_back(std::move(c));
     }
     p->range = problem.range;
+    p->step_cost = step_costs(im.pddl_domain, problem);
     im.problem = p;
 }
 

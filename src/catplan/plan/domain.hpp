@@ -13,6 +13,8 @@
 #include "catplan/base/source.hpp"
 #include "catplan/rewrite/rule.hpp"
 
+#include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -46,6 +48,12 @@ struct Problem {
     /// where some m meets them all, a negative one not extending along n (PDDL's negative goals,
     /// `(not (on a b))`). Empty for most problems.
     std::vector<rewrite::ApplicationCondition> goal_conditions = {};
+    /// What a step of `rule` with these arguments (part names, one per parameter) costs, or
+    /// nullopt when it has no cost and cannot be taken (a PDDL cost whose function value the
+    /// problem does not give). Unset: every step costs 1 (the searches count steps).
+    std::function<std::optional<std::int64_t>(const Rule& rule,
+                                              const std::vector<std::string>& args)>
+        step_cost = {};
 };
 
 using ProblemPtr = std::shared_ptr<const Problem>;

@@ -124,8 +124,16 @@ struct SearchResult {
     /// The configuration that ran, in words ("lazy greedy best-first, hff and lmcount, preferred
     /// operators").
     std::string config;
-    /// Whether the plan is optimal (A* with an admissible heuristic over every transition).
+    /// Whether the plan is optimal (A* with an admissible heuristic over every transition): of
+    /// least cost where `costs`, else shortest.
     bool optimal = false;
+    /// Whether the search summed the steps' costs (Problem::step_cost): A* on a ground task whose
+    /// actions do not all cost 1. Every other search counts each step as 1.
+    bool costs = false;
+    /// Ground actions left out because the problem gives their step no cost, and why costs were
+    /// not counted where they could not be (ground/task.hpp: Task::uncosted, costs_ignored).
+    std::uint64_t uncosted = 0;
+    std::string costs_ignored;
     /// Transitions the grounded search could not follow (exits, ground/task.hpp) and one example;
     /// with any, "unsolvable" is not claimed from the grounded search.
     std::uint64_t exits = 0;

@@ -6,6 +6,7 @@
 #include "catplan/plan/ground/grounding.hpp"
 #include "catplan/plan/ground/mutexes.hpp"
 
+#include <algorithm>
 #include <fmt/format.h>
 
 namespace catplan::plan::ground {
@@ -202,6 +203,17 @@ private:
     std::vector<std::pair<ObjectId, Part>> slot_part_;
 };
 
+// Whether the actions' costs are all 1; a cost the search cannot sum makes every action cost 1.
+void settle_costs(Task& task) {
+    if (!task.costs_ignored.empty()) {
+        for (Action& a : task.actions) {
+            a.cost = 1;
+        }
+    }
+    task.unit_cost = std::all_of(task.actions.begin(), task.actions.end(),
+                                 [](const Action& a) { return a.cost == 1; });
+}
+
 } // namespace
 
 Result<Task> compile(const ProblemPtr& problem, Budget& budget, const CompileOptions& options) {
@@ -220,6 +232,7 @@ Result<Task> compile(const ProblemPtr& problem, Budget& budget, const CompileOpt
         return fail(*why);
     }
     finish_actions(u);
+    settle_costs(task);
     if (auto why = ground_goal(u, options)) {
         return fail(*why);
     }

@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <optional>
+#include <queue>
+#include <tuple>
 
 namespace catplan::plan::ground {
 
@@ -91,29 +93,19 @@ EngineResult breadth_first(Space& space) {
 
 EngineResult eager_best_first(Space& space, Evaluator& h, bool astar) {
     struct Entry {
+        int f, h;          // A*: f = g + h; greedy: f = 0
+        std::uint64_t seq; // first in, first out among equal keys
         StateId state;
         int g;
     };
 
-    // A*: the key is f, and within f, h (kept as f * (H + 1) + h would overflow; two levels).
-    std::vector<BucketList<Entry>> by_f; // A*: per f, buckets by h; greedy: one list by h
-    std::size_t min_f = SIZE_MAX, open_size = 0;
-    auto push = [&](StateId s, int g, int hv) {
-        auto f = static_cast<std::size_t>(astar ? g + hv : 0);
-        if (f >= by_f.size()) {
-            by_f.resize(f + 1);
-        }
-        by_f[f].push(hv, {s, g});
-        min_f = std::min(min_f, f);
-        ++open_size;
+    // A heap rather than buckets by f and h: with action costs the keys are sparse and large.
+    auto later = [](const Entry& a, const Entry& b) {
+        return std::tie(a.f, a.h, a.seq) > std::tie(b.f, b.h, b.seq);
     };
-    auto pop = [&]() {
-        while (by_f[min_f].empty()) {
-            ++min_f;
-        }
-        --open_size;
-        return by_f[min_f].pop();
-    };
+    std::priority_queue<Entry, std::vector<Entry>, decltype(later)> open(later);
+    std::uint64_t seq = 0;
+    auto push = [&](StateId s, int g, int hv) { open.push({astar ? g + hv : 0, hv, seq++, s, g}); };
     std::vector<int> hval;
     auto set_h = [&](StateId s, int v) {
         if (hval.size() <= s) {
@@ -133,11 +125,13 @@ EngineResult eager_best_first(Space& space, Evaluator& h, bool astar) {
     set_h(root, h0);
     push(root, 0, h0);
     std::vector<ActionId> ops;
-    while (open_size > 0) {
+    while (!open.empty()) {
         if (auto stop = space.limit_reached()) {
             return {*stop, {}};
         }
-        auto [e, hv] = pop();
+        const Entry e = open.top();
+        open.pop();
+        const int hv = e.h;
         Node& node = space.node(e.state);
         if (node.closed && (!astar || e.g >= node.g)) {
             continue;
@@ -152,12 +146,12 @@ EngineResult eager_best_first(Space& space, Evaluator& h, bool astar) {
         }
         ++space.stats.expanded;
         space.applicable(e.state, ops);
-        int g = e.g + 1;
         for (ActionId a : ops) {
             auto succ = space.successor(e.state, a);
             if (!succ) {
                 continue;
             }
+            int g = e.g + space.cost(a);
             Node& n = space.node(succ->id);
             if (!succ->is_new) {
                 if (h.path_dependent()) {
@@ -185,7 +179,7 @@ EngineResult eager_best_first(Space& space, Evaluator& h, bool astar) {
             }
             push(succ->id, g, hs);
         }
-        space.stats.frontier = open_size;
+        space.stats.frontier = open.size();
     }
     return {SearchStatus::Unsolvable, {}};
 }
@@ -252,15 +246,16 @@ public:
             }
         }
         int g = space_.node(s).g;
-        if (bound_ > 0 && g + 1 >= bound_) {
-            return true;
-        }
         space_.stats.f = values_[0];
         std::sort(pref_.begin(), pref_.end());
         for (ActionId op : ops_) {
+            int g_op = g + space_.cost(op);
+            if (bound_ > 0 && g_op >= bound_) {
+                continue;
+            }
             bool p = preferred_ && std::binary_search(pref_.begin(), pref_.end(), op);
             for (std::size_t i = 0; i < hs_.size(); ++i) {
-                int key = weight_ == 0 ? values_[i] : g + 1 + weight_ * values_[i];
+                int key = weight_ == 0 ? values_[i] : g_op + weight_ * values_[i];
                 subs_[i * per_h_].list.push(key, {s, op});
                 if (p) {
                     subs_[i * per_h_ + 1].list.push(key, {s, op});
@@ -343,7 +338,7 @@ EngineResult lazy_best_first(Space& space, const std::vector<Evaluator*>& hs,
         if (!succ) {
             continue;
         }
-        int g = parent.g + 1;
+        int g = parent.g + space.cost(e.action);
         Node& n = space.node(succ->id);
         if (!succ->is_new) {
             if (path_dependent) {

@@ -108,19 +108,26 @@ std::string describe_config(const SearchOptions& o, const Evaluators& e) {
 class Runner {
 public:
     Runner(const Task& task, const SearchOptions& options, Budget& budget, SearchResult& result)
-        : task_(task), options_(options), budget_(budget), r_(result), relaxed_(task) {}
+        : task_(task),
+          options_(options),
+          budget_(budget),
+          r_(result),
+          costs_(!task.unit_cost && options.search == SearchKind::AStar),
+          relaxed_(task, costs_) {}
 
     // The first search, then with anytime the weighted ones; the best plan in best_.
     SearchStatus run() {
         Evaluators e(task_, relaxed_, budget_, options_);
-        r_.config = describe_config(options_, e);
+        r_.config = describe_config(options_, e) + (costs_ ? ", summing action costs" : "");
+        r_.costs = costs_;
         r_.stats.end_setup(budget_);
         EngineResult first = search(e, 0, 0);
         if (first.status != SearchStatus::Solved) {
             return first.status;
         }
         keep(first.plan);
-        bool optimal_search = options_.search == SearchKind::BreadthFirst ||
+        // Breadth-first search finds a shortest plan, which is a cheapest one only at unit costs.
+        bool optimal_search = (options_.search == SearchKind::BreadthFirst && task_.unit_cost) ||
                               (options_.search == SearchKind::AStar && e.first().admissible());
         r_.optimal = optimal_search;
         if (!options_.anytime || optimal_search) {
@@ -151,7 +158,7 @@ public:
 
 private:
     EngineResult search(Evaluators& e, int weight, int bound) {
-        Space space(task_, budget_, options_, r_.stats);
+        Space space(task_, budget_, options_, r_.stats, costs_);
         EngineResult out;
         switch (options_.search) {
         case SearchKind::BreadthFirst:
@@ -188,6 +195,7 @@ private:
     const SearchOptions& options_;
     Budget& budget_;
     SearchResult& r_;
+    bool costs_; // the search sums the actions' costs
     RelaxedTask relaxed_;
     std::vector<ActionId> best_;
     std::uint64_t exits_ = 0;
@@ -237,6 +245,8 @@ void search_task(const Task& task, const SearchOptions& options, Budget& budget,
     auto& r = out.result;
     r.stats.variables = task.vars.size();
     r.stats.actions = task.actions.size();
+    r.uncosted = task.uncosted;
+    r.costs_ignored = task.costs_ignored;
     Runner runner(task, options, budget, r);
     try {
         r.status = runner.run();

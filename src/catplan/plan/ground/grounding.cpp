@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <map>
 #include <unordered_map>
 
@@ -590,6 +591,10 @@ private:
         a.bindings = m.bindings;
         a.pre = d.pre.sorted();
         a.exit = d.exit;
+        if (!cost_of(a)) {
+            ++task_.uncosted; // the step cannot be taken: it is no action of the task
+            return false;
+        }
         bool fresh = false;
         if (a.exit.empty()) {
             Facts eff;
@@ -625,6 +630,31 @@ private:
         }
         task_.actions.push_back(std::move(a));
         return fresh;
+    }
+
+    // Sets a's cost from the problem's step_cost; false when its step has no cost. A cost the
+    // search cannot sum is noted in the task (costs_ignored) and the action costs 1.
+    bool cost_of(Action& a) {
+        const auto& step_cost = task_.problem->step_cost;
+        if (!step_cost) {
+            return true;
+        }
+        const Rule& rule = *task_.problem->domain->rules[a.rule];
+        auto args = task_.argument_names(a);
+        auto c = step_cost(rule, args);
+        if (!c) {
+            return false;
+        }
+        if (*c < 0 || *c > kMaxActionCost) {
+            if (task_.costs_ignored.empty()) {
+                task_.costs_ignored =
+                    fmt::format("{}({}) costs {}, and the search sums costs from 0 to {} per step",
+                                rule.name, fmt::join(args, ", "), *c, kMaxActionCost);
+            }
+            return true;
+        }
+        a.cost = static_cast<int>(*c);
+        return true;
     }
 
     Universe& u_;

@@ -5,7 +5,7 @@
 
 namespace catplan::plan::ground {
 
-RelaxedTask::RelaxedTask(const Task& task) {
+RelaxedTask::RelaxedTask(const Task& task, bool costs) {
     offset_.resize(task.vars.size());
     for (VarId v = 0; v < task.vars.size(); ++v) {
         offset_[v] = num_props_;
@@ -25,6 +25,7 @@ RelaxedTask::RelaxedTask(const Task& task) {
         }
         RelaxedAction r;
         r.action = a;
+        r.cost = costs ? act.cost : 1;
         for (const Fact& f : act.pre) {
             if (!absent(f)) {
                 r.pre.push_back(prop(f));

@@ -1,9 +1,10 @@
 #pragma once
 // The delete relaxation of a ground task, shared by its heuristics: one proposition per variable
-// value; per ground action its preconditions and its effects as adds, unit costs, with forbidden
-// facts and negative conditions dropped and exits left out. Facts that a two-valued variable
-// (presence of an atom or a slot) is absent are dropped from preconditions and effects, as STRIPS
-// relaxations drop deletes and negative preconditions. Then an action is dropped when another
+// value; per ground action its preconditions and its effects as adds, unit costs (or the task's,
+// for a search that counts them), with forbidden facts and negative conditions dropped and exits
+// left out. Facts that a two-valued variable (presence of an atom or a slot) is absent are dropped
+// from preconditions and effects, as STRIPS relaxations drop deletes and negative preconditions.
+// Then an action is dropped when another
 // needs no more and adds no less (PDDL's rule variants, import.hpp, collapse to one): each
 // relaxed action lists the ground actions it stands for, so preferred operators name them all.
 // A goal with several terms gets one more proposition, the goal, and a zero-cost action per term
@@ -26,7 +27,8 @@ struct RelaxedAction {
 
 class RelaxedTask {
 public:
-    explicit RelaxedTask(const Task& task);
+    /// The relaxation of task; each action costs 1, or with `costs` what the task says.
+    explicit RelaxedTask(const Task& task, bool costs = false);
 
     std::uint32_t num_props() const { return num_props_; }
 

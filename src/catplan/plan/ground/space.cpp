@@ -4,11 +4,13 @@
 
 namespace catplan::plan::ground {
 
-Space::Space(const Task& t, Budget& budget, const SearchOptions& options, SearchStats& st)
+Space::Space(const Task& t, Budget& budget, const SearchOptions& options, SearchStats& st,
+             bool costs)
     : task(t),
       stats(st),
       budget_(budget),
       options_(options),
+      costs_(costs),
       packer_(t),
       registry_(packer_, budget),
       generator_(t, packer_),

@@ -23,9 +23,14 @@ struct Node {
 
 class Space {
 public:
-    Space(const Task& task, Budget& budget, const SearchOptions& options, SearchStats& stats);
+    /// The space of task; with `costs` a step costs what its action does (Action::cost), else 1.
+    Space(const Task& task, Budget& budget, const SearchOptions& options, SearchStats& stats,
+          bool costs = false);
 
     const Task& task;
+
+    /// What taking a costs in this search.
+    int cost(ActionId a) const { return costs_ ? task.actions[a].cost : 1; }
 
     StateId initial();
 
@@ -65,6 +70,7 @@ public:
 private:
     Budget& budget_;
     const SearchOptions& options_;
+    bool costs_;
     StatePacker packer_;
     StateRegistry registry_;
     SuccessorGenerator generator_;
@@ -83,8 +89,9 @@ struct EngineResult {
 /// Breadth-first search (shortest plans; the goal tested on generation).
 EngineResult breadth_first(Space& space);
 
-/// Eager best-first search: A* (f = g + h, ties by h, goal tested on expansion, reopening) when
-/// astar, else greedy by h (goal tested on generation), as Fast Downward's eager_greedy.
+/// Eager best-first search: A* (f = g + h, g summing Space::cost, ties by h then first in, goal
+/// tested on expansion, reopening) when astar, else greedy by h (goal tested on generation), as
+/// Fast Downward's eager_greedy.
 EngineResult eager_best_first(Space& space, Evaluator& h, bool astar);
 
 /// Lazy best-first search with deferred evaluation (successors enter the open lists with their
@@ -92,7 +99,8 @@ EngineResult eager_best_first(Space& space, Evaluator& h, bool astar);
 /// f = g + weight * h; one open list per evaluator, and when `preferred` (evaluators of hs whose
 /// preferred operators count) is not empty one more each holding only preferred successors, taken
 /// in turn, the preferred ones boosted by 1000 whenever an evaluator's best value improves (Fast
-/// Downward's lazy_greedy / lazy_wastar). Successors with g + 1 >= bound are pruned (0: no bound).
+/// Downward's lazy_greedy / lazy_wastar). g sums Space::cost; successors with g >= bound are
+/// pruned (0: no bound).
 EngineResult lazy_best_first(Space& space, const std::vector<Evaluator*>& hs,
                              const std::vector<Evaluator*>& preferred, int weight, int bound);
 

@@ -1,6 +1,7 @@
 #include "catplan/plan/ground/task.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 namespace catplan::plan::ground {
 
@@ -59,14 +60,19 @@ std::string Task::describe(Fact fact) const {
 
 std::string Task::describe_action(ActionId id) const {
     const Action& a = actions[id];
+    return fmt::format("{}({})", problem->domain->rules[a.rule]->name,
+                       fmt::join(argument_names(a), ", "));
+}
+
+std::vector<std::string> Task::argument_names(const Action& a) const {
     const Rule& rule = *problem->domain->rules[a.rule];
-    std::string args;
+    std::vector<std::string> out;
+    out.reserve(rule.parameters.size());
     for (const auto& p : rule.parameters) {
         Image c = a.match[p.ob.index()][p.part];
-        std::string name = c.atom ? describe(atoms[c.id].var) : object_name(c.id);
-        args += (args.empty() ? "" : ", ") + name;
+        out.push_back(c.atom ? describe(atoms[c.id].var) : object_name(c.id));
     }
-    return fmt::format("{}({})", rule.name, args);
+    return out;
 }
 
 } // namespace catplan::plan::ground

@@ -120,7 +120,12 @@ struct Action {
     std::vector<Fact> eff;               // sorted by variable
     std::vector<VarId> creates; // atom variables it sets present that it did not need present
     std::string exit;           // not empty: why applying it leaves the task
+    int cost = 1;               // what the problem says the step costs (Problem::step_cost)
 };
+
+/// The largest cost of one ground action the task keeps; a problem with a larger one is searched
+/// counting steps (g and h are ints summed over a plan).
+inline constexpr std::int64_t kMaxActionCost = 1'000'000;
 
 struct Task {
     ProblemPtr problem;
@@ -136,6 +141,14 @@ struct Task {
     /// Groups of atom variables of which at most one is present in every reachable state
     /// (mutexes.hpp); the state packer stores disjoint ones in one field each.
     std::vector<std::vector<VarId>> mutex_groups;
+    /// Whether every action costs 1; when not, an A* search counts the costs (ground_search.hpp).
+    bool unit_cost = true;
+    /// Ground actions left out because the problem gives their step no cost (the step cannot be
+    /// taken: a PDDL cost whose function value is missing).
+    std::uint64_t uncosted = 0;
+    /// Not empty when the problem's costs cannot be counted and each action costs 1 instead:
+    /// why (a cost beyond kMaxActionCost, or a negative one).
+    std::string costs_ignored;
 
     /// "isHolding(gripper)", "On(E, D)", "Block#1 exists": for messages and tests.
     std::string describe(VarId var) const;
@@ -143,6 +156,8 @@ struct Task {
     std::string describe(Fact fact) const;
     /// "unstack(E, D)" (the rule and its parameters' images).
     std::string describe_action(ActionId a) const;
+    /// The names of the images of the rule's parameters under the action's match ("E", "D").
+    std::vector<std::string> argument_names(const Action& a) const;
     /// The name of an object: its initial part's label, or "Block#2" for a slot.
     std::string object_name(ObjectId o) const;
 };
