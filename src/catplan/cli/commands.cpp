@@ -266,8 +266,8 @@ std::string plan_summary(const plan::SearchResult& r, const std::string& search,
                             r.exits == 1 ? "was" : "were", r.exit_example);
     }
     if (r.stats.plans > 1) {
-        text +=
-            fmt::format("{}anytime: {} plans found, the shortest kept\n", comment, r.stats.plans);
+        text += fmt::format("{}anytime: {} plans found, the {} kept\n", comment, r.stats.plans,
+                            r.costs ? "cheapest" : "shortest");
     }
     if (r.uncosted > 0) {
         text += fmt::format("{}{} ground action{} left out: the problem gives {} step no cost\n",

@@ -220,6 +220,24 @@ TEST(PddlCosts, AStarSumsTheCostsAndFindsTheCheapestPlan) {
     EXPECT_TRUE(costed(lama).undefined.empty());
 }
 
+TEST(PddlCosts, AnytimeSearchKeepsTheCheapestPlan) {
+    auto l = load("roads-domain.pddl", "roads-p01.pddl");
+    ASSERT_TRUE(l->import) << l->errors();
+    plan::SearchOptions anytime;
+    anytime.search = plan::SearchKind::Lama;
+    anytime.anytime = true;
+    auto first = plan::find_plan(*l->import->problem, {});
+    ASSERT_TRUE(first.plan);
+    EXPECT_EQ(first.plan->steps.size(), 1U); // lama counts steps: the road a-d, cost 20
+    auto r = plan::find_plan(*l->import->problem, anytime);
+    ASSERT_TRUE(r.plan);
+    EXPECT_TRUE(r.costs);
+    EXPECT_FALSE(r.optimal);
+    EXPECT_GE(r.stats.plans, 2U);
+    EXPECT_TRUE(has(r.config, "anytime")) << r.config;
+    EXPECT_EQ(r.plan->to_string(), "drive(t1, a, b)\ndrive(t1, b, c)\ndrive(t1, c, d)\n");
+}
+
 TEST(PddlCosts, AStarOnTheLiftTableIsCheapest) {
     auto l = load("lift-domain.pddl", "lift-p01.pddl");
     ASSERT_TRUE(l->import) << l->errors();

@@ -3,6 +3,7 @@
 #include "catplan/plan/ground/space.hpp"
 
 #include <algorithm>
+#include <map>
 #include <optional>
 #include <queue>
 #include <tuple>
@@ -11,18 +12,26 @@ namespace catplan::plan::ground {
 
 namespace {
 
-// Entries by integer key, first in first out within a key; buckets grow in blocks (std::deque).
+// Entries by integer key, first in first out within a key. Keys below kDense have a bucket each
+// (a vector indexed by key, so most pushes and pops take constant time); larger keys, which sums
+// of action costs give, are kept in a map, so a key of a million does not allocate a million
+// buckets.
 template <class T>
 class BucketList {
 public:
     void push(int key, const T& item) {
         auto k = static_cast<std::size_t>(std::max(key, 0));
+        ++size_;
+        if (k >= kDense) {
+            sparse_[k].push_back(item);
+            return;
+        }
         if (k >= buckets_.size()) {
             buckets_.resize(k + 1);
         }
         buckets_[k].push_back(item);
         min_ = std::min(min_, k);
-        ++size_;
+        ++dense_size_;
     }
 
     bool empty() const { return size_ == 0; }
@@ -31,19 +40,31 @@ public:
 
     /// The first item of the smallest key, and the key.
     std::pair<T, int> pop() {
+        --size_;
+        if (dense_size_ == 0) {
+            auto first = sparse_.begin();
+            std::pair<T, int> out{first->second.front(), static_cast<int>(first->first)};
+            first->second.pop_front();
+            if (first->second.empty()) {
+                sparse_.erase(first);
+            }
+            return out;
+        }
         while (buckets_[min_].empty()) {
             ++min_;
         }
         T item = buckets_[min_].front();
         buckets_[min_].pop_front();
-        --size_;
+        --dense_size_;
         return {item, static_cast<int>(min_)};
     }
 
 private:
+    static constexpr std::size_t kDense = 4096;
     std::vector<std::deque<T>> buckets_;
+    std::map<std::size_t, std::deque<T>> sparse_;
     std::size_t min_ = SIZE_MAX;
-    std::size_t size_ = 0;
+    std::size_t size_ = 0, dense_size_ = 0;
 };
 
 // Evaluates a state with one evaluator, telling a path-dependent one how it was reached.

@@ -6,6 +6,8 @@
 #include "catplan/plan/validate.hpp"
 
 #include <fmt/format.h>
+#include <optional>
+#include <utility>
 
 namespace catplan::plan::ground {
 
@@ -113,7 +115,7 @@ public:
           budget_(budget),
           r_(result),
           costs_(!task.unit_cost && options.search == SearchKind::AStar),
-          relaxed_(task, costs_) {}
+          relaxed_(task, costs_ ? CostType::Normal : CostType::One) {}
 
     // The first search, then with anytime the weighted ones; the best plan in best_.
     SearchStatus run() {
@@ -121,7 +123,7 @@ public:
         r_.config = describe_config(options_, e) + (costs_ ? ", summing action costs" : "");
         r_.costs = costs_;
         r_.stats.end_setup(budget_);
-        EngineResult first = search(e, 0, 0);
+        EngineResult first = search(e, 0, 0, costs_);
         if (first.status != SearchStatus::Solved) {
             return first.status;
         }
@@ -134,11 +136,21 @@ public:
             return SearchStatus::Solved;
         }
         r_.config += "; anytime: lazy weighted A* with weights 5, 3, 2, 1";
-        // As LAMA: each weight once, the last one again for as long as it finds a better plan.
+        // As LAMA: with general costs the later searches sum them (g and the bound), and their
+        // heuristics count each action's cost plus 1, so that zero-cost steps still count.
+        std::optional<RelaxedTask> plus_one;
+        if (!task_.unit_cost) {
+            plus_one.emplace(task_, CostType::PlusOne);
+            r_.config += ", summing action costs";
+            r_.costs = true;
+        }
+        const RelaxedTask& later = plus_one ? *plus_one : relaxed_;
+        // As LAMA: each weight once, the last one again for as long as it finds a better plan;
+        // a plan that costs nothing cannot be bettered.
         for (int w : {5, 3, 2, 1, 1}) {
-            for (bool again = true; again && !best_.empty();) {
-                Evaluators ew(task_, relaxed_, budget_, options_);
-                EngineResult better = search(ew, w, static_cast<int>(best_.size()));
+            for (bool again = true; again && cost(best_) > 0;) {
+                Evaluators ew(task_, later, budget_, options_);
+                EngineResult better = search(ew, w, cost(best_), !task_.unit_cost);
                 if (better.status == SearchStatus::Solved) {
                     keep(better.plan);
                 } else if (better.status != SearchStatus::Unsolvable) {
@@ -157,8 +169,9 @@ public:
     const std::string& exit_example() const { return exit_example_; }
 
 private:
-    EngineResult search(Evaluators& e, int weight, int bound) {
-        Space space(task_, budget_, options_, r_.stats, costs_);
+    // One search; `costs`: g sums the actions' costs (else it counts steps).
+    EngineResult search(Evaluators& e, int weight, int bound, bool costs) {
+        Space space(task_, budget_, options_, r_.stats, costs);
         EngineResult out;
         switch (options_.search) {
         case SearchKind::BreadthFirst:
@@ -184,9 +197,20 @@ private:
         return out;
     }
 
+    // What a plan costs: the sum of its actions' costs (its length where every action costs 1).
+    int cost(const std::vector<ActionId>& plan) const {
+        int sum = 0;
+        for (ActionId a : plan) {
+            sum += task_.actions[a].cost;
+        }
+        return sum;
+    }
+
+    // Keeps the cheaper plan, and of two as cheap the shorter.
     void keep(const std::vector<ActionId>& plan) {
         ++r_.stats.plans;
-        if (best_.empty() || plan.size() < best_.size() || r_.stats.plans == 1) {
+        auto key = [&](const std::vector<ActionId>& p) { return std::pair(cost(p), p.size()); };
+        if (r_.stats.plans == 1 || key(plan) < key(best_)) {
             best_ = plan;
         }
     }

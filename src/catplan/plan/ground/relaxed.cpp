@@ -5,7 +5,7 @@
 
 namespace catplan::plan::ground {
 
-RelaxedTask::RelaxedTask(const Task& task, bool costs) {
+RelaxedTask::RelaxedTask(const Task& task, CostType costs) {
     offset_.resize(task.vars.size());
     for (VarId v = 0; v < task.vars.size(); ++v) {
         offset_[v] = num_props_;
@@ -25,7 +25,7 @@ RelaxedTask::RelaxedTask(const Task& task, bool costs) {
         }
         RelaxedAction r;
         r.action = a;
-        r.cost = costs ? act.cost : 1;
+        r.cost = costs == CostType::One ? 1 : act.cost + (costs == CostType::PlusOne ? 1 : 0);
         for (const Fact& f : act.pre) {
             if (!absent(f)) {
                 r.pre.push_back(prop(f));

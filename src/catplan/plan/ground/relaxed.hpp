@@ -1,14 +1,14 @@
 #pragma once
 // The delete relaxation of a ground task, shared by its heuristics: one proposition per variable
-// value; per ground action its preconditions and its effects as adds, unit costs (or the task's,
-// for a search that counts them), with forbidden facts and negative conditions dropped and exits
-// left out. Facts that a two-valued variable (presence of an atom or a slot) is absent are dropped
-// from preconditions and effects, as STRIPS relaxations drop deletes and negative preconditions.
-// Then an action is dropped when another
-// needs no more and adds no less (PDDL's rule variants, import.hpp, collapse to one): each
-// relaxed action lists the ground actions it stands for, so preferred operators name them all.
-// A goal with several terms gets one more proposition, the goal, and a zero-cost action per term
-// that adds it, so every heuristic sees one conjunction.
+// value; per ground action its preconditions and its effects as adds, with forbidden facts and
+// negative conditions dropped and exits left out; unit costs, or the task's for a search that sums
+// them (CostType). Facts that a two-valued variable (presence of an atom or a slot) is absent are
+// dropped from preconditions and effects, as STRIPS relaxations drop deletes and negative
+// preconditions. Then an action is dropped when another needs no more, adds no less and costs no
+// more (PDDL's rule variants, import.hpp, collapse to one): each relaxed action lists the ground
+// actions it stands for, so preferred operators name them all. A goal with several terms gets one
+// more proposition, the goal, and a zero-cost action per term that adds it, so every heuristic
+// sees one conjunction.
 
 #include "catplan/plan/ground/task.hpp"
 
@@ -17,6 +17,11 @@
 namespace catplan::plan::ground {
 
 using Prop = std::uint32_t;
+
+/// What an action costs in the relaxation: 1 (Fast Downward's cost_type=one), the task's cost
+/// (normal), or the task's cost plus 1 (plusone: LAMA's later iterations, where zero-cost actions
+/// still lengthen a relaxed plan).
+enum class CostType : std::uint8_t { One, Normal, PlusOne };
 
 struct RelaxedAction {
     std::vector<Prop> pre, add;
@@ -27,8 +32,8 @@ struct RelaxedAction {
 
 class RelaxedTask {
 public:
-    /// The relaxation of task; each action costs 1, or with `costs` what the task says.
-    explicit RelaxedTask(const Task& task, bool costs = false);
+    /// The relaxation of task, its actions costing as `costs` says.
+    explicit RelaxedTask(const Task& task, CostType costs = CostType::One);
 
     std::uint32_t num_props() const { return num_props_; }
 

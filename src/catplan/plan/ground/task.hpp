@@ -125,7 +125,7 @@ struct Action {
 
 /// The largest cost of one ground action the task keeps; a problem with a larger one is searched
 /// counting steps (g and h are ints summed over a plan).
-inline constexpr std::int64_t kMaxActionCost = 1'000'000;
+inline constexpr std::int64_t kMaxActionCost = 100'000;
 
 struct Task {
     ProblemPtr problem;

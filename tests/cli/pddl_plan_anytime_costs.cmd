@@ -1,0 +1,1 @@
+plan tests/pddl/roads-domain.pddl tests/pddl/roads-p01.pddl --anytime --no-timing
