@@ -9,7 +9,8 @@
 // 3. Relaxed reachability: each rule's L is matched against everything reached so far (the
 //    matcher ignores which values exclude each other), each match becomes a ground action, and its
 //    effects are reached; until nothing new is reached. A rule's created parts take the lowest
-//    free slots (a ground action per choice; none free: an exit action).
+//    free slots (a ground action per choice; none free: an exit action). Each action costs what
+//    Problem::step_cost says (1 when unset); a step it gives no cost is no action of the task.
 // 4. Each action then gets the conditions that need the whole universe: the dangling condition
 //    (every object or atom that may point to a deleted slot and is not part of the match must
 //    not), and its negative application conditions (every extension of the match along L -> N,
