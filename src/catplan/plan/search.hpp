@@ -127,8 +127,9 @@ struct SearchResult {
     /// Whether the plan is optimal (A* with an admissible heuristic over every transition): of
     /// least cost where `costs`, else shortest.
     bool optimal = false;
-    /// Whether the search summed the steps' costs (Problem::step_cost): A* on a ground task whose
-    /// actions do not all cost 1. Every other search counts each step as 1.
+    /// Whether the search summed the steps' costs (Problem::step_cost), on a ground task whose
+    /// actions do not all cost 1: A*, and the anytime searches after the first plan. Every other
+    /// search counts each step as 1.
     bool costs = false;
     /// Ground actions left out because the problem gives their step no cost, and why costs were
     /// not counted where they could not be (ground/task.hpp: Task::uncosted, costs_ignored).

@@ -5,6 +5,9 @@
 #include "catplan/plan/ground/space.hpp"
 #include "catplan/plan/validate.hpp"
 
+#include <algorithm>
+#include <climits>
+#include <cstdint>
 #include <fmt/format.h>
 #include <optional>
 #include <utility>
@@ -197,13 +200,14 @@ private:
         return out;
     }
 
-    // What a plan costs: the sum of its actions' costs (its length where every action costs 1).
+    // What a plan costs: the sum of its actions' costs (its length where every action costs 1),
+    // at most INT_MAX (a search bound cannot exceed it).
     int cost(const std::vector<ActionId>& plan) const {
-        int sum = 0;
+        std::int64_t sum = 0;
         for (ActionId a : plan) {
-            sum += task_.actions[a].cost;
+            sum = std::min<std::int64_t>(sum + task_.actions[a].cost, INT_MAX);
         }
-        return sum;
+        return static_cast<int>(sum);
     }
 
     // Keeps the cheaper plan, and of two as cheap the shorter.
