@@ -1,6 +1,7 @@
 #include "catplan/cli/commands.hpp"
 
 #include "catplan/acset/printer.hpp"
+#include "catplan/base/assert.hpp"
 #include "catplan/base/diagnostic.hpp"
 #include "catplan/base/out_of_memory.hpp"
 #include "catplan/base/output_file.hpp"
@@ -15,6 +16,7 @@
 #include "catplan/lang/module.hpp"
 #include "catplan/migrate/describe.hpp"
 #include "catplan/plan/actions.hpp"
+#include "catplan/plan/costs.hpp"
 #include "catplan/plan/search.hpp"
 #include "catplan/plan/validate.hpp"
 #include "catplan/schema/printer.hpp"
@@ -27,6 +29,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fmt/format.h>
+#include <limits>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <ostream>
@@ -168,8 +171,12 @@ int cmd_validate(const ValidateArgs& a, std::ostream& out, std::ostream& err) {
         where = fmt::format("{}:{}:{}", s.sources.name(r.file), lc.line, lc.col);
     }
     if (a.format == "json") {
-        out << json_text(validation_json(v.valid, v.goal_reached, v.failed_step, v.reason, where,
-                                         validated_steps_json(*problem, plan->steps, v)));
+        auto j = validation_json(v.valid, v.goal_reached, v.failed_step, v.reason, where,
+                                 validated_steps_json(*problem, plan->steps, v));
+        if (v.cost && v.valid) {
+            j["cost"] = *v.cost;
+        }
+        out << json_text(j);
         return v.valid ? kOk : kNo;
     }
     if (a.trace) {
@@ -188,6 +195,7 @@ int cmd_validate(const ValidateArgs& a, std::ostream& out, std::ostream& err) {
     }
     if (v.valid) {
         out << "valid: goal reached\n";
+        out << (v.cost ? fmt::format("plan cost: {}\n", *v.cost) : "");
         return kOk;
     }
     out << fmt::format("invalid: {}{}\n", v.reason, where.empty() ? "" : " (" + where + ")");
@@ -339,6 +347,26 @@ int plan_exit_code(plan::SearchStatus status) {
 
 namespace {
 
+/// The cost of a plan found on problem (its steps name rules), when the problem sums costs.
+std::optional<std::int64_t> plan_cost(const plan::Problem& problem, const plan::Plan& plan) {
+    if (!problem.step_cost) {
+        return std::nullopt;
+    }
+    std::int64_t total = 0;
+    for (const auto& step : plan.steps) {
+        const auto* rule = problem.domain->find_rule(step.action);
+        CATPLAN_ASSERT(rule != nullptr, "a found plan names the domain's rules");
+        auto c = plan::step_cost(problem, *rule, step.args);
+        if (!c) {
+            return std::nullopt; // a found plan is validated: not reached
+        }
+        if (__builtin_add_overflow(total, *c, &total)) {
+            return std::numeric_limits<std::int64_t>::max();
+        }
+    }
+    return total;
+}
+
 int cmd_plan(const PlanArgs& a, std::ostream& out, std::ostream& err) {
     auto last = std::make_shared<plan::SearchStats>();
     auto options = plan_options(a, err, last);
@@ -365,7 +393,9 @@ int cmd_plan(const PlanArgs& a, std::ostream& out, std::ostream& err) {
         return input_error(s);
     }
     auto r = plan::find_plan(*problem, options);
+    std::optional<std::int64_t> cost;
     if (r.plan) {
+        cost = plan_cost(*problem, *r.plan);
         r.plan = plan::action_plan(*problem->domain, *r.plan); // as the user writes them
     }
     int rc = plan_exit_code(r.status);
@@ -381,10 +411,15 @@ int cmd_plan(const PlanArgs& a, std::ostream& out, std::ostream& err) {
         for (const auto& st : r.plan ? r.plan->steps : std::vector<plan::Step>{}) {
             steps.push_back({{"action", st.action}, {"args", st.args}});
         }
-        out << plan_json(r, a.search, std::move(steps), !a.no_timing).dump(2) << "\n";
+        auto j = plan_json(r, a.search, std::move(steps), !a.no_timing);
+        if (cost) {
+            j["cost"] = *cost;
+        }
+        out << j.dump(2) << "\n";
         return rc;
     }
-    out << text << plan_summary(r, a.search, r.plan ? r.plan->steps.size() : 0, !a.no_timing, "# ");
+    out << text << (cost ? fmt::format("# cost = {}\n", *cost) : "")
+        << plan_summary(r, a.search, r.plan ? r.plan->steps.size() : 0, !a.no_timing, "# ");
     return rc;
 }
 

@@ -82,31 +82,15 @@ std::vector<std::string> negative_goals(const pddl::Import& im) {
 }
 
 /// The imported domain as `@domain <name>_domain(<name>)`: named apart from its schema, which
-/// keeps the PDDL name that maps refer to. A cost read from a problem's function cannot be
-/// written: the rule keeps its constant part and a comment says what is left out.
+/// keeps the PDDL name that maps refer to.
 std::string domain_text(const pddl::Import& im) {
     plan::Domain d = *im.domain;
     d.name += "_domain";
-    std::vector<std::string> dropped;
-    for (auto& rule : d.rules) {
-        if (rule->cost && !rule->cost->depends_on.empty()) {
-            auto copy = std::make_shared<rewrite::Rule>(*rule);
-            dropped.push_back(fmt::format("{}: {}", rule->name, rule->cost->depends_on));
-            copy->cost->depends_on.clear();
-            rule = std::move(copy);
-        }
-    }
     auto text = lang::print_domain(d);
     // An imported rule is always writable: no attribute variables, expressions or SPO, and
     // every created fact has all its arguments.
     CATPLAN_ASSERT(text.has_value(), "an imported PDDL domain cannot be written");
-    std::string out;
-    if (!dropped.empty()) {
-        out = fmt::format("# Costs read from the problem's functions are left out (the PDDL files "
-                          "keep them):\n#   {}\n",
-                          fmt::join(dropped, "\n#   "));
-    }
-    return out + *text;
+    return *text;
 }
 
 /// The objects of the PDDL types, most specific first: a PDDL object is a part of its type and

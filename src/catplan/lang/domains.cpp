@@ -5,6 +5,7 @@
 #include "catplan/lang/detail/elaboration.hpp"
 #include "catplan/lang/detail/elaborator.hpp"
 #include "catplan/lang/detail/rule_elaboration.hpp"
+#include "catplan/plan/costs.hpp"
 #include "catplan/plan/domain.hpp"
 
 #include <algorithm>
@@ -190,8 +191,9 @@ bool problem_instance(Elaborator& ctx, const Expr& st, const Declaration& dd,
     if (!st.is_binary("=") || st.args[0].kind != Expr::Kind::Name ||
         (st.args[0].text != "initial" && st.args[0].text != "goal") ||
         st.args[1].kind != Expr::Kind::Name) {
-        sink.error(st.range, fmt::format("expected 'initial = Instance', 'goal = Instance' or "
-                                         "a goal condition 'NAC => begin ... end', found '{}'",
+        sink.error(st.range, fmt::format("expected 'initial = Instance', 'goal = Instance', a "
+                                         "goal condition 'NAC => begin ... end', a function "
+                                         "value 'f(a, b) = 3' or 'metric = steps', found '{}'",
                                          to_string(st)));
         return false;
     }
@@ -217,6 +219,97 @@ bool problem_instance(Elaborator& ctx, const Expr& st, const Declaration& dd,
     *slots[i] = id->instance;
     names[i] = iname.text;
     return true;
+}
+
+// `metric = steps` (plans are measured by their steps although the rules say costs) or
+// `metric = cost` (the default); false when st says neither.
+bool problem_metric(const Expr& st, plan::Problem& p, DiagnosticSink& sink) {
+    if (!st.is_binary("=") || st.args[0].kind != Expr::Kind::Name || st.args[0].text != "metric") {
+        return false;
+    }
+    const Expr& v = st.args[1];
+    if (v.kind != Expr::Kind::Name || (v.text != "steps" && v.text != "cost")) {
+        sink.error(v.range, fmt::format("expected 'metric = cost' or 'metric = steps', found '{}'",
+                                        to_string(st)));
+    } else {
+        p.counts_steps = v.text == "steps";
+    }
+    return true;
+}
+
+// `road_length(a, d) = 20`, a value of a function rules' costs read (plan/costs.hpp): the
+// arguments parts of the initial state, the value a non-negative integer. False when st is no
+// such statement.
+bool function_value(const Expr& st, plan::Problem& p, DiagnosticSink& sink) {
+    if (!st.is_binary("=") || st.args[0].kind != Expr::Kind::Call) {
+        return false;
+    }
+    const Expr& f = st.args[0];
+    const Expr& v = st.args[1];
+    plan::FunctionValue value{f.text, {}, v.int_value, st.range};
+    bool ok = true;
+    for (const auto& a : f.args) {
+        if (a.kind != Expr::Kind::Name && a.kind != Expr::Kind::String) {
+            sink.error(a.range, fmt::format("expected a part name, found '{}'", to_string(a)));
+            ok = false;
+        }
+        value.args.push_back(a.text);
+    }
+    if (v.kind != Expr::Kind::Int || v.int_value < 0) {
+        sink.error(v.range, fmt::format("expected the value of {} as a non-negative integer, "
+                                        "found '{}'",
+                                        f.text, to_string(v)));
+        ok = false;
+    }
+    if (ok) {
+        p.values.push_back(std::move(value));
+    }
+    return true;
+}
+
+// The function values against the initial state and the rules: each argument a part, each
+// function given once per arguments and with as many as the rules' costs read it with.
+void check_values(const plan::Problem& p, const std::vector<const Expr*>& at,
+                  DiagnosticSink& sink) {
+    std::map<std::pair<std::string, std::vector<std::string>>, SourceRange> seen;
+    const ACSet& x = *p.initial;
+    for (std::size_t i = 0; i < p.values.size(); ++i) {
+        const auto& v = p.values[i];
+        const Expr& call = at[i]->args[0];
+        for (std::size_t k = 0; k < v.args.size(); ++k) {
+            bool part = false;
+            for (std::uint32_t o = 0; o < x.schema().num_obs() && !part; ++o) {
+                part = x.find_part(ObId(o), v.args[k]).has_value();
+            }
+            if (!part) {
+                sink.error(call.args[k].range,
+                           fmt::format("'{}' is no part of the initial state", v.args[k]));
+            }
+        }
+        auto [it, fresh] = seen.emplace(std::pair(v.function, v.args), v.range);
+        if (!fresh) {
+            auto& d = sink.error(v.range, fmt::format("{} is given twice", to_string(call)));
+            d.notes.emplace_back(it->second, "first given here");
+        }
+        const rewrite::Cost::Term* read = nullptr;
+        std::string rule;
+        for (const auto& r : p.domain->rules) {
+            for (std::size_t t = 0; r->cost && t < r->cost->terms.size() && !read; ++t) {
+                if (r->cost->terms[t].function == v.function) {
+                    read = &r->cost->terms[t];
+                    rule = r->name;
+                }
+            }
+        }
+        if (read == nullptr) {
+            sink.warning(call.name_range, fmt::format("no rule's cost reads '{}'", v.function));
+        } else if (read->arguments.size() != v.args.size()) {
+            sink.error(call.range,
+                       fmt::format("rule '{}' reads {} with {} argument{}, not {}", rule,
+                                   v.function, read->arguments.size(),
+                                   read->arguments.size() == 1 ? "" : "s", v.args.size()));
+        }
+    }
 }
 
 // The statements of `NAC => begin ... end` (or `@join begin ... end`), or nullptr.
@@ -367,10 +460,13 @@ void elaborate_problem(Elaborator& ctx, const MacroCall& form, bool imported) {
     std::string names[2];
     std::shared_ptr<const ACSet>* slots[2] = {&problem->initial, &problem->goal};
     std::vector<std::pair<const Expr*, const std::vector<Expr>*>> conditions;
+    std::vector<const Expr*> value_statements;
     for (const auto& st : form.body) {
         if (const auto* body = condition_block(st)) {
             conditions.emplace_back(&st, body);
-        } else {
+        } else if (function_value(st, *problem, sink)) {
+            value_statements.resize(problem->values.size(), &st);
+        } else if (!problem_metric(st, *problem, sink)) {
             problem_instance(ctx, st, *dd, dname.text, slots, names);
         }
     }
@@ -380,7 +476,11 @@ void elaborate_problem(Elaborator& ctx, const MacroCall& form, bool imported) {
                                                i == 0 ? "initial" : "goal"));
         }
     }
+    if (problem->initial != nullptr) {
+        check_values(*problem, value_statements, sink);
+    }
     if (sink.num_errors() == errors) {
+        plan::set_step_cost(*problem);
         // Negative goals (PDDL's `(not (on a b))`): conditions on the goal's embedding.
         for (const auto& [st, body] : conditions) {
             auto c =

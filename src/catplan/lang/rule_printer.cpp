@@ -155,8 +155,14 @@ std::string unwritable(const Rule& rule) {
             }
         }
     }
-    if (rule.cost && !rule.cost->depends_on.empty()) {
-        return fmt::format("its cost depends on {}", rule.cost->depends_on);
+    if (rule.cost) {
+        for (const auto& t : rule.cost->terms) {
+            for (const auto& a : t.arguments) {
+                if (a.parameter < 0 && a.constant.empty()) {
+                    return fmt::format("its cost reads {} of a parameter it lost", t.function);
+                }
+            }
+        }
     }
     std::vector<const ACSet*> states = {&rule.L, &rule.K, &rule.R};
     for (const auto& c : rule.conditions) {
@@ -183,6 +189,32 @@ std::string unwritable(const Rule& rule) {
     return "";
 }
 
+// An argument of an action or a cost term: the parameter's name or the part name in quotes.
+std::string argument_text(const Rule& rule, const rewrite::ActionOf::Argument& a) {
+    return a.parameter < 0
+               ? acset::Value::string(a.constant).to_string()
+               : quoted_name(rule.parameters[static_cast<std::size_t>(a.parameter)].name);
+}
+
+// `cost = 2 + road_length(from, to)`, when the rule says a cost.
+std::string cost_statement(const Rule& rule) {
+    if (!rule.cost) {
+        return "";
+    }
+    std::vector<std::string> parts;
+    if (rule.cost->constant != 0 || rule.cost->terms.empty()) {
+        parts.push_back(std::to_string(rule.cost->constant));
+    }
+    for (const auto& t : rule.cost->terms) {
+        std::vector<std::string> args;
+        for (const auto& a : t.arguments) {
+            args.push_back(argument_text(rule, a));
+        }
+        parts.push_back(fmt::format("{}({})", quoted_name(t.function), fmt::join(args, ", ")));
+    }
+    return fmt::format("    cost = {}\n", fmt::join(parts, " + "));
+}
+
 // `action = stack(x, x)`, unless the action is the rule itself.
 std::string action_statement(const Rule& rule) {
     if (!rule.action) {
@@ -193,10 +225,7 @@ std::string action_statement(const Rule& rule) {
     for (std::size_t i = 0; i < rule.action->arguments.size(); ++i) {
         const auto& a = rule.action->arguments[i];
         itself = itself && a.parameter == static_cast<int>(i);
-        args.push_back(
-            a.parameter < 0
-                ? acset::Value::string(a.constant).to_string()
-                : quoted_name(rule.parameters[static_cast<std::size_t>(a.parameter)].name));
+        args.push_back(argument_text(rule, a));
     }
     if (itself && args.size() == rule.parameters.size()) {
         return "";
@@ -233,9 +262,7 @@ Result<std::string> print_rule(const Rule& rule) {
     }
     std::string out =
         fmt::format("  @rule {}({}) begin\n", quoted_name(rule.name), fmt::join(params, ", "));
-    if (rule.cost) {
-        out += fmt::format("    cost = {}\n", rule.cost->constant);
-    }
+    out += cost_statement(rule);
     out += action_statement(rule);
     out += block("Pre", BlockView{&rule.L, &*ln, nullptr, {}});
     out += block("Keep", BlockView{&rule.K, &kn, nullptr, {}});
@@ -281,6 +308,17 @@ Result<std::string> print_problem(const plan::Problem& p, std::string_view domai
     std::string out =
         fmt::format("@problem {}({}) begin\n  initial = {}\n  goal = {}\n", quoted_name(p.name),
                     quoted_name(domain), quoted_name(initial), quoted_name(goal));
+    if (p.counts_steps) {
+        out += "  metric = steps\n";
+    }
+    for (const auto& v : p.values) {
+        std::vector<std::string> args;
+        for (const auto& a : v.args) {
+            args.push_back(quoted_name(a));
+        }
+        out +=
+            fmt::format("  {}({}) = {}\n", quoted_name(v.function), fmt::join(args, ", "), v.value);
+    }
     if (p.goal_conditions.empty()) {
         return out + "end\n";
     }

@@ -26,17 +26,24 @@ using acset::Value;
 using schema::Schema;
 using schema::ValueKind;
 
-// `cost = 3`: what a step of the rule costs (PDDL's action costs), a non-negative Int.
+// `cost = 3 + road_length(from, to)`: what a step of the rule costs (PDDL's action costs); its
+// terms are checked against the parameters once they are known.
 void rule_cost(const Expr& st, RuleSource& src, DiagnosticSink& sink) {
-    const Expr& v = st.args[1];
     if (src.cost != nullptr) {
         auto& d = sink.error(st.range, "the cost is given twice");
         d.notes.emplace_back(src.cost->range, "first given here");
-    } else if (v.kind != Expr::Kind::Int || v.int_value < 0) {
-        sink.error(v.range, fmt::format("expected the cost as a non-negative integer, found '{}'",
-                                        to_string(v)));
     } else {
         src.cost = &st;
+    }
+}
+
+// The summands of `a + b + c`.
+void summands(const Expr& e, std::vector<const Expr*>& out) {
+    if (e.is_binary("+")) {
+        summands(e.args[0], out);
+        summands(e.args[1], out);
+    } else {
+        out.push_back(&e);
     }
 }
 
@@ -276,7 +283,7 @@ public:
         }
         parameters(*rule);
         if (src_.cost != nullptr) {
-            rule->cost = rewrite::Cost{src_.cost->args[1].int_value, ""};
+            cost(*rule, src_.cost->args[1]);
         }
         if (src_.action != nullptr) {
             action(*rule, src_.action->args[1]);
@@ -295,27 +302,68 @@ public:
 private:
     bool failed() const { return ctx_.sink.num_errors() != errors_; }
 
+    // An argument of an action or a cost term: a parameter of the rule or a part name in
+    // quotes. nullopt after an error.
+    std::optional<rewrite::ActionOf::Argument> argument(const rewrite::Rule& rule,
+                                                        const Expr& arg) {
+        if (arg.kind == Expr::Kind::String) {
+            return rewrite::ActionOf::Argument{-1, arg.text};
+        }
+        auto p = std::find_if(rule.parameters.begin(), rule.parameters.end(),
+                              [&](const auto& q) { return q.name == arg.text; });
+        if (arg.kind != Expr::Kind::Name || p == rule.parameters.end()) {
+            ctx_.sink.error(arg.range, fmt::format("expected a parameter of rule '{}' or a part "
+                                                   "name in quotes, found '{}'",
+                                                   rule.name, to_string(arg)));
+            return std::nullopt;
+        }
+        return rewrite::ActionOf::Argument{static_cast<int>(p - rule.parameters.begin()), {}};
+    }
+
+    // `cost = 2 + road_length(from, to)`: non-negative integers and functions of the
+    // parameters, whose values a problem gives (plan/costs.hpp), summed.
+    void cost(rewrite::Rule& rule, const Expr& e) {
+        rewrite::Cost c;
+        std::vector<const Expr*> terms;
+        summands(e, terms);
+        for (const Expr* t : terms) {
+            if (t->kind == Expr::Kind::Int && t->int_value >= 0) {
+                if (__builtin_add_overflow(c.constant, t->int_value, &c.constant)) {
+                    ctx_.sink.error(t->range, "the cost is out of range");
+                }
+                continue;
+            }
+            if (t->kind != Expr::Kind::Call) {
+                ctx_.sink.error(t->range, fmt::format("expected the cost as a non-negative "
+                                                      "integer, a function of the parameters "
+                                                      "such as 'length(from, to)', or a sum of "
+                                                      "them, found '{}'",
+                                                      to_string(*t)));
+                continue;
+            }
+            rewrite::Cost::Term term{t->text, {}};
+            for (const auto& arg : t->args) {
+                if (auto x = argument(rule, arg)) {
+                    term.arguments.push_back(std::move(*x));
+                }
+            }
+            c.terms.push_back(std::move(term));
+        }
+        rule.cost = std::move(c);
+    }
+
     // The arguments of `action = a(x, "c")`: parameters of the rule (one may be given twice:
     // the rule identifies those arguments) or part names in quotes; every parameter is given.
     void action(rewrite::Rule& rule, const Expr& e) {
         rewrite::ActionOf a{e.text, {}};
         std::vector<bool> given(rule.parameters.size(), false);
         for (const auto& arg : e.args) {
-            if (arg.kind == Expr::Kind::String) {
-                a.arguments.push_back({-1, arg.text});
-                continue;
+            if (auto x = argument(rule, arg)) {
+                if (x->parameter >= 0) {
+                    given[static_cast<std::size_t>(x->parameter)] = true;
+                }
+                a.arguments.push_back(std::move(*x));
             }
-            auto p = std::find_if(rule.parameters.begin(), rule.parameters.end(),
-                                  [&](const auto& q) { return q.name == arg.text; });
-            if (arg.kind != Expr::Kind::Name || p == rule.parameters.end()) {
-                ctx_.sink.error(arg.range, fmt::format("expected a parameter of rule '{}' or a "
-                                                       "part name in quotes, found '{}'",
-                                                       rule.name, to_string(arg)));
-                continue;
-            }
-            auto i = static_cast<std::size_t>(p - rule.parameters.begin());
-            given[i] = true;
-            a.arguments.push_back({static_cast<int>(i), {}});
         }
         for (std::size_t i = 0; i < given.size(); ++i) {
             if (!given[i]) {

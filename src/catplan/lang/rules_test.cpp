@@ -533,11 +533,145 @@ end
         << out;
     EXPECT_NE(out.find("test.cp:6:28: error: 'Thing' is given twice"), std::string::npos) << out;
     EXPECT_NE(out.find("test.cp:7:3: error: the facts are given twice"), std::string::npos) << out;
-    EXPECT_NE(out.find("test.cp:9:12: error: expected the cost as a non-negative integer, found "
-                       "'-1'"),
+    EXPECT_NE(out.find("test.cp:9:12: error: expected the cost as a non-negative integer, a "
+                       "function of the parameters such as 'length(from, to)', or a sum of them, "
+                       "found '-1'"),
               std::string::npos)
         << out;
     EXPECT_NE(out.find("test.cp:16:5: error: the cost is given twice"), std::string::npos) << out;
+}
+
+// A rule's cost may read functions of its parameters, whose values a problem gives; a step
+// whose value the problem does not give has no cost and is not valid.
+const char* kRoads = R"(
+@present Roads(FreeSchema) begin
+  (City, Road, At)::Ob
+  (from, to)::Hom(Road, City)
+  at::Hom(At, City)
+end
+@acset_colim Map(Roads) begin
+  (a, b, c)::City
+  (ab, bc, ac)::Road
+  from(ab) == a
+  to(ab) == b
+  from(bc) == b
+  to(bc) == c
+  from(ac) == a
+  to(ac) == c
+  here::At
+  at(here) == a
+end
+@acset_colim Nothing(Roads) begin
+end
+@domain Driving(Roads) begin
+  @rule drive(x, y) begin
+    cost = 1 + length(x, y) + toll("c")
+    Pre => begin
+      (x, y)::City
+      r::Road
+      from(r) == x
+      to(r) == y
+      h::At
+      at(h) == x
+    end
+    Keep => begin
+      (x, y)::City
+      r::Road
+      from(r) == x
+      to(r) == y
+    end
+    Eff => begin
+      h2::At
+      at(h2) == y
+    end
+  end
+end
+)";
+
+TEST(Rules, CostsReadTheProblemsFunctionValues) {
+    auto l = load_text(std::string(kRoads) + R"(
+@problem Trip(Driving) begin
+  initial = Map
+  goal = Nothing
+  length(a, b) = 3
+  length(b, c) = 4
+  toll(c) = 10
+end
+@problem Steps(Driving) begin
+  initial = Map
+  goal = Nothing
+  metric = steps
+end
+)");
+    ASSERT_FALSE(l->sink.has_errors()) << l->sink.render();
+    const auto& trip = *l->module.find("Trip")->problem;
+    const auto& rule = *trip.domain->rules.at(0);
+    ASSERT_TRUE(rule.cost.has_value());
+    EXPECT_EQ(rule.cost->to_string({"x", "y"}), "1 + length(x, y) + toll(\"c\")");
+    ASSERT_TRUE(trip.step_cost);
+    EXPECT_EQ(trip.step_cost(rule, {"a", "b"}), 14);
+    EXPECT_EQ(trip.step_cost(rule, {"a", "c"}), std::nullopt);
+    auto drives = [](std::vector<std::vector<std::string>> steps) {
+        plan::Plan p;
+        for (auto& args : steps) {
+            p.steps.push_back(plan::Step{"drive", std::move(args), {}});
+        }
+        return p;
+    };
+    auto v = plan::validate_plan(trip, drives({{"a", "b"}, {"b", "c"}}));
+    ASSERT_TRUE(v.valid) << v.reason;
+    EXPECT_EQ(v.cost, 29);
+    auto direct = plan::validate_plan(trip, drives({{"a", "c"}}));
+    EXPECT_FALSE(direct.valid);
+    EXPECT_EQ(direct.reason, "step 1 drive(a, c): its cost 1 + length(a, c) + toll(\"c\") has no "
+                             "value in the problem");
+    const auto& steps = *l->module.find("Steps")->problem;
+    EXPECT_TRUE(steps.counts_steps);
+    EXPECT_FALSE(steps.step_cost);
+    EXPECT_EQ(plan::validate_plan(steps, drives({{"a", "c"}})).cost, std::nullopt);
+}
+
+TEST(Rules, BadFunctionCostsAndValuesAreLocated) {
+    auto l = load_text(std::string(kRoads) + R"(
+@domain Flying(Roads) begin
+  @rule fly(x) begin
+    cost = distance(x, z) + 2.5
+    Pre => begin
+      x::City
+    end
+    Keep => begin
+      x::City
+    end
+  end
+end
+@problem Trip(Driving) begin
+  initial = Map
+  goal = Nothing
+  length(a, q) = 3
+  length(a, b) = -3
+  length(b, c) = 4
+  length(b, c) = 5
+  length(a) = 1
+  width(a, b) = 1
+  metric = fastest
+end
+)");
+    std::string out = l->sink.render();
+    for (const char* e :
+         {"test.cp:47:24: error: expected a parameter of rule 'fly' or a part name in quotes, "
+          "found 'z'",
+          "test.cp:47:29: error: expected the cost as a non-negative integer, a function of the "
+          "parameters such as 'length(from, to)', or a sum of them, found '2.5'",
+          "test.cp:59:13: error: 'q' is no part of the initial state",
+          "test.cp:60:18: error: expected the value of length as a non-negative integer, found "
+          "'-3'",
+          "test.cp:62:3: error: length(b, c) is given twice",
+          "test.cp:63:3: error: rule 'drive' reads length with 2 arguments, not 1",
+          "test.cp:64:3: warning: no rule's cost reads 'width'",
+          "test.cp:65:12: error: expected 'metric = cost' or 'metric = steps', found 'metric = "
+          "fastest'"}) {
+        EXPECT_NE(out.find(e), std::string::npos) << e << "\n" << out;
+    }
 }
 
 // Two rules carrying out one action (the domain of docs/language.md): `move(hall, hall)` is the

@@ -611,9 +611,26 @@ Result<rewrite::AttrExpr> translate_expr(const SchemaMap& f, const rewrite::Attr
     return out;
 }
 
-/// The action a migrated rule carries out: the source rule's, each parameter argument the first
-/// migrated parameter of its name; nullopt (the rule's own name) when a parameter the action
-/// names is lost, since a step could not say it.
+/// An argument of an action or cost term of rule, on the migrated rule's parameters: a parameter
+/// the first migrated one of its name; nullopt when the migration lost it.
+std::optional<rewrite::ActionOf::Argument>
+migrated_argument(const rewrite::Rule& rule, const rewrite::ActionOf::Argument& a,
+                  const std::vector<rewrite::Parameter>& migrated) {
+    if (a.parameter < 0) {
+        return a;
+    }
+    const std::string& name = rule.parameters[static_cast<std::size_t>(a.parameter)].name;
+    auto it = std::find_if(migrated.begin(), migrated.end(),
+                           [&](const rewrite::Parameter& p) { return p.name == name; });
+    if (it == migrated.end()) {
+        return std::nullopt;
+    }
+    return rewrite::ActionOf::Argument{static_cast<int>(it - migrated.begin()), {}};
+}
+
+/// The action a migrated rule carries out: the source rule's on the migrated parameters; nullopt
+/// (the rule's own name) when a parameter the action names is lost, since a step could not say
+/// it.
 std::optional<rewrite::ActionOf> migrated_action(const rewrite::Rule& rule,
                                                  const std::vector<rewrite::Parameter>& migrated) {
     if (!rule.action) {
@@ -621,17 +638,31 @@ std::optional<rewrite::ActionOf> migrated_action(const rewrite::Rule& rule,
     }
     rewrite::ActionOf out{rule.action->name, {}};
     for (const auto& a : rule.action->arguments) {
-        if (a.parameter < 0) {
-            out.arguments.push_back(a);
-            continue;
-        }
-        const std::string& name = rule.parameters[static_cast<std::size_t>(a.parameter)].name;
-        auto it = std::find_if(migrated.begin(), migrated.end(),
-                               [&](const rewrite::Parameter& p) { return p.name == name; });
-        if (it == migrated.end()) {
+        auto m = migrated_argument(rule, a, migrated);
+        if (!m) {
             return std::nullopt;
         }
-        out.arguments.push_back({static_cast<int>(it - migrated.begin()), {}});
+        out.arguments.push_back(std::move(*m));
+    }
+    return out;
+}
+
+/// The migrated action costs what the source action costs: the same constant and the same
+/// functions of the same arguments. A term whose argument the migration lost keeps it unresolved
+/// (no value: a search that sums costs does not take the step).
+std::optional<rewrite::Cost> migrated_cost(const rewrite::Rule& rule,
+                                           const std::vector<rewrite::Parameter>& migrated) {
+    if (!rule.cost) {
+        return std::nullopt;
+    }
+    rewrite::Cost out{rule.cost->constant, {}};
+    for (const auto& t : rule.cost->terms) {
+        rewrite::Cost::Term term{t.function, {}};
+        for (const auto& a : t.arguments) {
+            term.arguments.push_back(
+                migrated_argument(rule, a, migrated).value_or(rewrite::ActionOf::Argument{}));
+        }
+        out.terms.push_back(std::move(term));
     }
     return out;
 }
@@ -680,7 +711,6 @@ Result<rewrite::Rule> migrate(const SchemaMap& f, const rewrite::Rule& rule) {
     rewrite::Rule out(f.target());
     out.name = rule.name;
     out.range = rule.range;
-    out.cost = rule.cost; // the migrated action is the same action: it costs the same
     MigratedState l = migrate_state(f, rule.L);
     MigratedState k = migrate_state(f, rule.K);
     MigratedState r = migrate_state(f, rule.R);
@@ -722,6 +752,7 @@ Result<rewrite::Rule> migrate(const SchemaMap& f, const rewrite::Rule& rule) {
         }
     }
     out.action = migrated_action(rule, out.parameters);
+    out.cost = migrated_cost(rule, out.parameters);
     out.relations = migrate_relations(f, rule.relations);
     // Expressions, per variable of R, carried to every target type sent to their type.
     out.exprs.assign(t.num_attr_types(), {});

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <map>
 #include <set>
 
@@ -356,6 +357,9 @@ Result<ActionText> Writer::read_rule(const rewrite::Rule& rule) {
     if (auto ok = rule_nacs(rule, l_term, a); !ok) {
         return fail(ok.error());
     }
+    if (auto ok = rule_cost_terms(rule, L, term, a); !ok) {
+        return fail(ok.error());
+    }
     for (std::size_t i = 0; i < a.param_things.size(); ++i) {
         for (std::size_t j = i + 1; j < a.param_things.size(); ++j) {
             if (may_coincide(L.things[a.param_things[i]], L.things[a.param_things[j]])) {
@@ -365,6 +369,47 @@ Result<ActionText> Writer::read_rule(const rewrite::Rule& rule) {
         }
     }
     return a;
+}
+
+Result<bool> Writer::rule_cost_terms(const rewrite::Rule& rule, const Things& L,
+                                     const std::vector<std::string>& term, ActionText& a) {
+    if (!rule.cost) {
+        return true;
+    }
+    for (const auto& t : rule.cost->terms) {
+        std::vector<std::string> args, types;
+        for (const auto& arg : t.arguments) {
+            std::size_t i = Things::kNoThing;
+            if (arg.parameter >= 0) {
+                const auto& p = rule.parameters[static_cast<std::size_t>(arg.parameter)];
+                i = L.at(p.ob, p.part);
+            }
+            if (i == Things::kNoThing || term[i].empty()) {
+                return fail(fmt::format("not expressible: the cost of {} reads {} of a part "
+                                        "that is no parameter of the action",
+                                        rule.name, t.function));
+            }
+            args.push_back(term[i]);
+            types.push_back(thing_type(rd, L.things[i]));
+        }
+        std::string f = pddl_name(t.function, "f");
+        functions.emplace(f, types);
+        a.cost_terms.push_back(
+            fmt::format("({}{}{})", f, args.empty() ? "" : " ", fmt::join(args, " ")));
+    }
+    return true;
+}
+
+std::string Writer::write_functions() const {
+    std::string out = "(total-cost) - number";
+    for (const auto& [f, types] : functions) {
+        out += fmt::format("\n              ({}", f);
+        for (std::size_t i = 0; i < types.size(); ++i) {
+            out += fmt::format(" ?x{} - {}", i + 1, types[i]);
+        }
+        out += ") - number";
+    }
+    return fmt::format("  (:functions {})\n", out);
 }
 
 Result<bool> Writer::rule_facts(const rewrite::Rule& rule, const TermFn& l_term,
@@ -613,11 +658,6 @@ Result<std::string> Writer::write_actions(std::vector<Exported::Action>& actions
                                           std::set<std::string>& constants) {
     std::string out;
     for (const auto& group : group_rules(domain)) {
-        if (const auto& c = group.front()->cost; c && !c->depends_on.empty()) {
-            return fail(fmt::format("not expressible by catplan's export: the cost of {} is {}, "
-                                    "a value each problem gives, which the export does not write",
-                                    group.front()->name, c->depends_on));
-        }
         std::vector<ActionText> texts;
         for (const auto* r : group) {
             auto t = read_rule(*r);
@@ -650,9 +690,13 @@ Result<std::string> Writer::write_actions(std::vector<Exported::Action>& actions
                 eff.push_back("(not " + f + ")");
             }
         }
-        // The action's cost (its variants share it): a constant, as :action-costs writes it.
+        // The action's cost (its variants share it): a constant and function terms, as
+        // :action-costs writes them.
         if (const auto& cost = group.front()->cost; cost && cost->constant != 0) {
             eff.push_back(fmt::format("(increase (total-cost) {})", cost->constant));
+        }
+        for (const auto& t : a.cost_terms) {
+            eff.push_back(fmt::format("(increase (total-cost) {})", t));
         }
         std::string params;
         for (const auto& [v, t] : a.params) {

@@ -3,10 +3,13 @@
 
 #include "catplan/pddl/detail/export_writer.hpp"
 #include "catplan/pddl/export.hpp"
+#include "catplan/plan/costs.hpp"
 #include "catplan/plan/validate.hpp"
 
 #include <algorithm>
 #include <fmt/format.h>
+#include <map>
+#include <set>
 
 namespace catplan::pddl {
 
@@ -114,6 +117,8 @@ struct GoalText {
     std::vector<std::string> statements;                     // atoms and negated atoms
     std::vector<std::pair<std::string, std::string>> params; // ?x, type
     std::vector<std::pair<ObId, Part>> param_parts;
+    /// "d - City" per pinned thing: constants of the domain when the goal action names them.
+    std::set<std::string> pinned;
 };
 
 Result<GoalText> read_goal(Writer& w, const acset::ACSet& g) {
@@ -122,12 +127,14 @@ Result<GoalText> read_goal(Writer& w, const acset::ACSet& g) {
     if (!things) {
         return fail(things.error());
     }
-    GoalText gt{std::move(*things), false, {}, {}, {}, {}};
+    GoalText gt{std::move(*things), false, {}, {}, {}, {}, {}};
     const schema::Schema& s = g.schema();
     for (const Thing& t : gt.things.things) {
         gt.pattern = gt.pattern || !t.pinned;
         gt.terms.push_back(t.pinned ? t.name : "?" + t.name);
-        if (!t.pinned) {
+        if (t.pinned) {
+            gt.pinned.insert(t.name + " - " + detail::thing_type(w.rd, t));
+        } else {
             gt.params.emplace_back("?" + t.name, detail::thing_type(w.rd, t));
             gt.param_parts.emplace_back(t.first, t.part[t.first.index()]);
         }
@@ -246,10 +253,34 @@ std::string goal_action_name(const plan::Domain& d) {
     return actions.take("reach-goal");
 }
 
-/// Whether an action of d has a cost (PDDL's :action-costs).
-bool has_costs(const plan::Domain& d) {
-    return std::any_of(d.rules.begin(), d.rules.end(),
-                       [](const auto& r) { return r->cost.has_value(); });
+/// The problem's function values as `(= (road-length a d) 20)`, each argument the PDDL object of
+/// the part it names.
+Result<std::vector<std::string>> value_facts(const plan::Problem& p, const Things& init) {
+    std::map<std::string, std::string> object; // part name -> PDDL object
+    const acset::ACSet& x = *p.initial;
+    for (const Thing& t : init.things) {
+        for (std::uint32_t o = 0; o < t.part.size(); ++o) {
+            if (t.part[o] != kNoPart && !t.marker) {
+                object.emplace(x.part_name(ObId(o), t.part[o]), t.name);
+            }
+        }
+    }
+    std::vector<std::string> out;
+    for (const auto& v : p.values) {
+        std::string args;
+        for (const auto& a : v.args) {
+            auto it = object.find(a);
+            if (it == object.end()) {
+                return fail(fmt::format("not expressible: the value of {} at {} names no PDDL "
+                                        "object",
+                                        v.function, a));
+            }
+            args += " " + it->second;
+        }
+        out.push_back(
+            fmt::format("(= ({}{}) {})", detail::pddl_name(v.function, "f"), args, v.value));
+    }
+    return out;
 }
 
 /// The problem file (w's goal action decided).
@@ -276,8 +307,13 @@ Result<std::string> problem_text(Writer& w, const GoalText& goal,
     out += fmt::format("(define (problem {})\n  (:domain {})\n", detail::pddl_name(p.name, "p"),
                        detail::pddl_name(p.domain->name, "d"));
     out += fmt::format("  (:objects {})\n", fmt::join(objects, " "));
-    bool costs = has_costs(*p.domain);
-    if (costs) {
+    bool costs = plan::has_costs(*p.domain) && !p.counts_steps;
+    if (plan::has_costs(*p.domain)) {
+        auto values = value_facts(p, *init);
+        if (!values) {
+            return fail(values.error());
+        }
+        facts->insert(facts->end(), values->begin(), values->end());
         facts->emplace_back("(= (total-cost) 0)");
     }
     out += fmt::format("  (:init {})\n", fmt::join(*facts, "\n         "));
@@ -337,6 +373,9 @@ Result<Exported> export_pddl(const plan::Domain& domain, const plan::Problem* pr
     }
     Exported ex;
     std::set<std::string> constants;
+    if (goal && goal->pattern) {
+        constants = goal->pinned; // the goal action names them
+    }
     std::string problem_file;
     if (problem != nullptr) {
         auto first = problem_text(w, *goal, constants); // names the initial marker facts
@@ -366,7 +405,7 @@ Result<Exported> export_pddl(const plan::Domain& domain, const plan::Problem* pr
     std::string out = fmt::format("; Exported by catplan from the domain {}.\n", domain.name);
     out += comment_lines(w.notes);
     out += fmt::format("(define (domain {})\n", detail::pddl_name(domain.name, "d"));
-    bool costs = has_costs(domain);
+    bool costs = plan::has_costs(domain);
     out += fmt::format("  (:requirements :strips :typing :negative-preconditions :equality{})\n",
                        costs ? " :action-costs" : "");
     out += fmt::format("  (:types{})\n", w.write_types());
@@ -374,7 +413,7 @@ Result<Exported> export_pddl(const plan::Domain& domain, const plan::Problem* pr
         out += fmt::format("  (:constants {})\n", fmt::join(constants, " "));
     }
     out += "  (:predicates\n" + w.write_predicates() + "  )\n";
-    out += costs ? "  (:functions (total-cost) - number)\n" : "";
+    out += costs ? w.write_functions() : "";
     out += *actions + ")\n";
     ex.domain = std::move(out);
     if (!problem_file.empty()) {

@@ -98,16 +98,20 @@ TEST(PddlCosts, RulesCarryTheirActionsCost) {
     const auto* up = l->import->domain->find_rule("slow-up");
     ASSERT_NE(up, nullptr);
     ASSERT_TRUE(up->cost.has_value());
-    EXPECT_EQ(up->cost->depends_on, "(travel-slow ?f1 ?f2)");
+    std::vector<std::string> names;
+    for (const auto& p : up->parameters) {
+        names.push_back(p.name);
+    }
+    EXPECT_EQ(up->cost->to_string(names), "travel-slow(f1, f2)");
     const auto* leave = l->import->domain->find_rule("leave");
     ASSERT_TRUE(leave->cost.has_value());
     EXPECT_EQ(leave->cost->constant, 0);
-    EXPECT_TRUE(leave->cost->depends_on.empty());
+    EXPECT_TRUE(leave->cost->terms.empty());
     auto plain = load("blocksworld-domain.pddl", "");
     EXPECT_FALSE(plain->import->domain->rules[0]->cost.has_value());
 }
 
-TEST(PddlCosts, ConstantCostsSurviveExportAndFluentOnesAreRefused) {
+TEST(PddlCosts, ConstantCostsSurviveExport) {
     auto l = load("shuttle-domain.pddl", "shuttle-p01.pddl");
     ASSERT_TRUE(l->import) << l->errors();
     auto dom = export_domain(*l->import->domain);
@@ -125,11 +129,31 @@ TEST(PddlCosts, ConstantCostsSurviveExportAndFluentOnesAreRefused) {
     ASSERT_TRUE(before.valid && after.valid) << before.reason << after.reason;
     EXPECT_EQ(before.cost.total, 8);
     EXPECT_EQ(after.cost.total, 8);
-    auto lift = load("lift-domain.pddl", "");
-    auto refused = export_domain(*lift->import->domain);
-    ASSERT_FALSE(refused.has_value());
-    EXPECT_TRUE(has(refused.error(), "the cost of slow-up is (travel-slow ?f1 ?f2)"))
-        << refused.error();
+}
+
+TEST(PddlCosts, FunctionCostsSurviveExport) {
+    auto l = load("lift-domain.pddl", "lift-p01.pddl");
+    ASSERT_TRUE(l->import) << l->errors();
+    auto dom = export_domain(*l->import->domain);
+    auto prob = export_problem(*l->import->problem);
+    ASSERT_TRUE(dom && prob) << (dom ? prob.error() : dom.error());
+    EXPECT_TRUE(has(*dom, "(travel-slow ?x1 - level ?x2 - level) - number")) << *dom;
+    EXPECT_TRUE(has(*dom, "(increase (total-cost) (travel-slow ?f1 ?f2))")) << *dom;
+    EXPECT_TRUE(has(*prob, "(= (travel-slow f0 f1) ")) << *prob;
+    auto back = load_text(*dom, *prob);
+    ASSERT_TRUE(back->import) << back->errors() << *dom << *prob;
+    // A* finds a plan of the same least cost on the files read back.
+    for (const auto* im : {&*l->import, &*back->import}) {
+        plan::SearchOptions astar;
+        astar.search = plan::SearchKind::AStar;
+        auto r = plan::find_plan(*im->problem, astar);
+        ASSERT_TRUE(r.plan && r.costs);
+        auto ipc = to_ipc_plan(*im, *r.plan);
+        ASSERT_TRUE(ipc.has_value());
+        auto v = validate_ipc_plan(*im, *ipc);
+        ASSERT_TRUE(v.valid) << v.reason;
+        EXPECT_EQ(v.cost.total, 19);
+    }
 }
 
 TEST(PddlCosts, MalformedCostsAreBadInputAndFractionsUnsupported) {

@@ -3,6 +3,7 @@
 #include "catplan/pddl/costs.hpp"
 #include "catplan/pddl/ipc_plan.hpp"
 #include "catplan/plan/actions.hpp"
+#include "catplan/plan/costs.hpp"
 #include "catplan/schema/schema.hpp"
 
 #include <algorithm>
@@ -290,18 +291,6 @@ private:
             rule->conditions.push_back(std::move(nac));
         }
         rule->exprs.resize(im_.domain->schema->num_attr_types());
-        if (im_.pddl_domain.has_costs()) {
-            rewrite::Cost cost;
-            std::vector<std::string> fluents;
-            for (const auto& c : a_.cost) {
-                cost.constant += c.number;
-                if (c.fluent) {
-                    fluents.push_back(c.to_string());
-                }
-            }
-            cost.depends_on = fmt::format("{}", fmt::join(fluents, " + "));
-            rule->cost = std::move(cost);
-        }
         rewrite::ActionOf action{a_.name, {}};
         std::vector<int> param_index(id.blocks, -1);
         for (std::size_t i = 0; i < a_.params.size(); ++i) {
@@ -318,7 +307,32 @@ private:
             action.arguments.push_back({param_index[b], {}});
         }
         rule->action = std::move(action);
+        if (im_.pddl_domain.has_costs()) {
+            rule->cost = cost(rule->action->arguments);
+        }
         return Variant{std::move(rule)};
+    }
+
+    /// The action's cost as a rule's: its numbers summed, and a term per function read, each
+    /// argument the action's argument (a parameter of the rule or a constant) or a constant.
+    rewrite::Cost cost(const std::vector<rewrite::ActionOf::Argument>& args) const {
+        rewrite::Cost out;
+        for (const auto& c : a_.cost) {
+            out.constant += c.number;
+            if (!c.fluent) {
+                continue;
+            }
+            rewrite::Cost::Term term{c.fluent->predicate, {}};
+            for (const auto& t : c.fluent->args) {
+                auto p = std::find_if(a_.params.begin(), a_.params.end(),
+                                      [&](const TypedName& q) { return q.name == t.name; });
+                term.arguments.push_back(t.variable && p != a_.params.end()
+                                             ? args[static_cast<std::size_t>(p - a_.params.begin())]
+                                             : rewrite::ActionOf::Argument{-1, t.name});
+            }
+            out.terms.push_back(std::move(term));
+        }
+        return out;
     }
 
     const Import& im_;
@@ -391,21 +405,20 @@ std::vector<TypedName> mentioned(const Domain& d, const Problem& p,
     return out;
 }
 
-/// What a step of a rule costs under the problem's metric (costs.hpp), for a search that sums
-/// costs; unset when every step costs 1.
-std::function<std::optional<std::int64_t>(const rewrite::Rule&, const std::vector<std::string>&)>
-step_costs(const Domain& domain, const Problem& problem) {
-    if (unit_cost(domain, problem)) {
-        return {};
+/// The values the problem gives the functions the actions' costs read (total-cost's left out).
+std::vector<plan::FunctionValue> function_values(const Problem& problem) {
+    std::vector<plan::FunctionValue> out;
+    for (const auto& v : problem.values) {
+        if (v.term.predicate == "total-cost") {
+            continue; // what the plan has cost so far, 0 at the start
+        }
+        plan::FunctionValue f{v.term.predicate, {}, v.value, v.range};
+        for (const auto& t : v.term.args) {
+            f.args.push_back(t.name);
+        }
+        out.push_back(std::move(f));
     }
-    auto d = std::make_shared<const Domain>(domain);
-    auto p = std::make_shared<const Problem>(problem);
-    return [d, p](const rewrite::Rule& rule,
-                  const std::vector<std::string>& args) -> std::optional<std::int64_t> {
-        plan::Step a = plan::action_step(rule, plan::Step{rule.name, args, {}});
-        auto c = step_cost(*d, *p, IpcStep{std::move(a.action), std::move(a.args), {}});
-        return c ? std::optional<std::int64_t>(*c) : std::nullopt;
-    };
+    return out;
 }
 
 /// im with the problem's states (on im's domain): the goal of its positive literals, and one
@@ -445,7 +458,9 @@ void add_problem(Import& im, const Problem& problem) {
         p->goal_conditions.push_back(std::move(c));
     }
     p->range = problem.range;
-    p->step_cost = step_costs(im.pddl_domain, problem);
+    p->values = function_values(problem);
+    p->counts_steps = !problem.metric && im.pddl_domain.has_costs();
+    plan::set_step_cost(*p);
     im.problem = p;
 }
 

@@ -38,6 +38,15 @@ struct Domain {
 
 using DomainPtr = std::shared_ptr<const Domain>;
 
+/// A value a problem gives a function that rules' costs read: `road_length(a, d) = 20`, the
+/// arguments part names of the initial state (PDDL's `(= (road-length a d) 20)`).
+struct FunctionValue {
+    std::string function;
+    std::vector<std::string> args;
+    std::int64_t value = 0;
+    SourceRange range;
+};
+
 struct Problem {
     std::string name;
     DomainPtr domain;
@@ -54,6 +63,11 @@ struct Problem {
     std::function<std::optional<std::int64_t>(const Rule& rule,
                                               const std::vector<std::string>& args)>
         step_cost = {};
+    /// The values of the functions the rules' costs read (costs.hpp), in the order given.
+    std::vector<FunctionValue> values = {};
+    /// Whether plans are measured by their number of steps although the rules say costs
+    /// (`metric = steps`; a PDDL problem without `(:metric minimize (total-cost))`).
+    bool counts_steps = false;
 };
 
 using ProblemPtr = std::shared_ptr<const Problem>;

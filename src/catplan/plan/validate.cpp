@@ -1,11 +1,13 @@
 #include "catplan/plan/validate.hpp"
 
 #include "catplan/plan/actions.hpp"
+#include "catplan/plan/costs.hpp"
 #include "catplan/rewrite/dpo.hpp"
 
 #include <algorithm>
 #include <charconv>
 #include <fmt/format.h>
+#include <limits>
 
 namespace catplan::plan {
 namespace {
@@ -423,6 +425,9 @@ Validation validate_plan(const Problem& problem, const Plan& plan, const Validat
     CATPLAN_ASSERT(problem.initial != nullptr && problem.domain != nullptr,
                    "a problem needs an initial state and a domain");
     Validation v;
+    if (problem.step_cost) {
+        v.cost = 0;
+    }
     ACSet x = *problem.initial;
     if (options.keep_states) {
         v.states.push_back(x);
@@ -446,6 +451,15 @@ Validation validate_plan(const Problem& problem, const Plan& plan, const Validat
             v.failed_step = i;
             v.reason = fmt::format("{}: {}", prefix, m.error());
             break;
+        }
+        auto cost = step_cost(problem, *rule, step.args);
+        if (!cost) {
+            v.failed_step = i;
+            v.reason = fmt::format("{}: {}", prefix, cost.error());
+            break;
+        }
+        if (v.cost && __builtin_add_overflow(*v.cost, *cost, &*v.cost)) {
+            v.cost = std::numeric_limits<std::int64_t>::max();
         }
         auto applied = rewrite::rewrite_in_place(*rule, x, *m);
         if (!applied) {

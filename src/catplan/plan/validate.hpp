@@ -87,6 +87,9 @@ struct Validation {
     std::vector<ACSetMorphism> matches;
     /// With keep_states: X_0 (the initial state) and the state after each step applied.
     std::vector<ACSet> states;
+    /// The cost of the steps applied (plan/costs.hpp), when the problem sums costs (step_cost
+    /// set). A step without a cost is not applied: the plan is invalid there.
+    std::optional<std::int64_t> cost;
     /// The last state reached (always set).
     std::optional<ACSet> final_state;
 };

@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 namespace catplan::rewrite {
 
@@ -244,6 +245,24 @@ std::vector<RuleProblem> check_rule(const Rule& rule) {
         }
     }
     return problems;
+}
+
+std::string Cost::to_string(const std::vector<std::string>& names) const {
+    std::vector<std::string> parts;
+    if (constant != 0 || terms.empty()) {
+        parts.push_back(std::to_string(constant));
+    }
+    for (const auto& t : terms) {
+        std::vector<std::string> args;
+        for (const auto& a : t.arguments) {
+            auto i = static_cast<std::size_t>(a.parameter);
+            args.push_back(a.parameter >= 0
+                               ? (i < names.size() ? names[i] : "?")
+                               : (a.constant.empty() ? "?" : "\"" + a.constant + "\""));
+        }
+        parts.push_back(fmt::format("{}({})", t.function, fmt::join(args, ", ")));
+    }
+    return fmt::format("{}", fmt::join(parts, " + "));
 }
 
 } // namespace catplan::rewrite

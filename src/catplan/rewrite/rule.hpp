@@ -97,14 +97,6 @@ struct Parameter {
     Part part;
 };
 
-/// What applying a rule costs, when the rule says (PDDL's `(increase (total-cost) N)`).
-struct Cost {
-    std::int64_t constant = 0;
-    /// Not empty when the cost also depends on a problem's values, as written
-    /// ("(road-length ?from ?to)"): a PDDL problem gives them, the rule alone does not.
-    std::string depends_on;
-};
-
 /// The action a rule carries out when one action has several rules (a PDDL action's variants,
 /// one per identification of its parameters): a step `stack(b, a)` of the action is a step of
 /// the rule whose arguments it fits.
@@ -119,6 +111,28 @@ struct ActionOf {
     std::string name;
     std::vector<Argument> arguments;
     friend bool operator==(const ActionOf&, const ActionOf&) = default;
+};
+
+/// What applying a rule costs, when the rule says: a constant and the values a problem gives
+/// functions of the step's arguments, summed (PDDL's `(increase (total-cost) 2)` and
+/// `(increase (total-cost) (road-length ?from ?to))`; catplan's `cost = 2 + road_length(from,
+/// to)`). plan/costs.hpp computes it.
+struct Cost {
+    /// A function of the step's arguments: `road_length(from, to)`.
+    struct Term {
+        std::string function;
+        /// Each a parameter of the rule or a part name; a parameter -1 with no name is one a
+        /// migration lost (the term then has no value).
+        std::vector<ActionOf::Argument> arguments;
+        friend bool operator==(const Term&, const Term&) = default;
+    };
+
+    std::int64_t constant = 0;
+    std::vector<Term> terms;
+
+    /// "2 + road_length(from, to)", each parameter called by its name in `names` (the rule's
+    /// parameters' names, or a step's arguments), a part name in quotes.
+    std::string to_string(const std::vector<std::string>& names) const;
 };
 
 /// How a rule treats parts of X that refer to a part it deletes. DPO: the match is rejected (the

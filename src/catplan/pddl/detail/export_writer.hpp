@@ -48,6 +48,7 @@ struct ActionText {
     std::set<std::string> constants;       // "c - type"
     std::vector<std::string> inequalities; // "?x|?y"
     std::set<std::string> deleted_markers; // shapes
+    std::vector<std::string> cost_terms;   // "(road-length ?from ?to)"
 };
 
 class Writer {
@@ -66,6 +67,8 @@ public:
     std::string goal_action, goal_predicate; // when the goal is a pattern
     std::vector<std::string> notes;
     bool creates_facts_not_sets = false;
+    /// The functions the actions' costs read, by PDDL name: argument types.
+    std::map<std::string, std::vector<std::string>> functions;
 
     /// `(on ?x ?y)` for fact part p of x (a marker argument left out: a MarkerFact); fails on an
     /// unset hom.
@@ -80,6 +83,11 @@ public:
     /// What the things of L and R ask and change: membership, attribute values, markers.
     Result<bool> rule_things_conditions(const rewrite::Rule& rule, const RuleThings& rt,
                                         const std::vector<std::string>& term, ActionText& a);
+    /// The rule's cost terms as PDDL function terms on its parameters (recorded in functions).
+    Result<bool> rule_cost_terms(const rewrite::Rule& rule, const Things& L,
+                                 const std::vector<std::string>& term, ActionText& a);
+    /// The `(:functions ...)` declaration: total-cost and the functions the costs read.
+    std::string write_functions() const;
     /// Negative application conditions as negative preconditions.
     Result<bool> rule_nacs(const rewrite::Rule& rule, const TermFn& l_term, ActionText& a);
     /// The negative preconditions that keep a deleted marker from dangling: no fact the action

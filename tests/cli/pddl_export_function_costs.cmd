@@ -1,0 +1,1 @@
+pddl export tests/cli/data/roads.cp --problem ToD

@@ -1,0 +1,1 @@
+plan tests/cli/data/roads.cp --problem ToD --search astar --no-timing

@@ -1,0 +1,1 @@
+plan tests/cli/data/roads.cp --problem ToDInSteps --search astar --no-timing

@@ -1,0 +1,1 @@
+validate tests/cli/data/roads.cp --problem ToD --plan tests/cli/data/roads_cheapest.plan
