@@ -63,6 +63,7 @@ struct PyValidation {
     bool goal_reached = false;
     std::optional<std::size_t> failed_step;
     std::string reason;
+    std::optional<std::int64_t> cost;
     std::vector<PyMorphism> matches;
     std::vector<PyState> states;
     std::optional<PyState> final_state;
@@ -84,6 +85,7 @@ PyValidation validate(PyProblem& problem, const py::handle& plan_obj, bool keep_
     out.goal_reached = v.goal_reached;
     out.failed_step = v.failed_step;
     out.reason = v.reason;
+    out.cost = v.cost;
     for (auto& x : v.states) {
         out.states.push_back(PyState::owned(std::move(x)));
     }
@@ -200,6 +202,9 @@ void bind_validate_and_search(py::module_& m) {
         .def_readonly("reason", &PyValidation::reason,
                       "Why the plan is invalid: 'step 3 pickup(B): no match: ...' or 'goal not "
                       "reached: ...'; '' when valid.")
+        .def_readonly("cost", &PyValidation::cost,
+                      "The cost of the steps applied when the problem's rules say costs ("
+                      "cost = length(from, to)), else None.")
         .def_readonly("matches", &PyValidation::matches,
                       "The match (Morphism Pre -> state) of each step applied.")
         .def_readonly("states", &PyValidation::states,

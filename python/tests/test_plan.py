@@ -27,6 +27,17 @@ def test_an_invalid_plan_is_an_answer_with_a_reason(case_study):
     assert v.reason.startswith("step 1 pickup(E): no match")
 
 
+def test_a_plan_costs_what_its_rules_and_the_problems_values_say():
+    here = os.path.dirname(os.path.abspath(__file__))
+    m = catplan.load(os.path.join(here, "..", "..", "tests", "cli", "data", "roads.cp"))
+    cheapest = ["drive(t1, a, b)", "drive(t1, b, c)", "drive(t1, c, d)"]
+    assert catplan.validate(m["ToD"], cheapest).cost == 12
+    assert catplan.validate(m["ToD"], ["drive(t1, a, d)"]).cost == 20
+    through_e = catplan.validate(m["ToD"], ["drive(t1, a, e)", "drive(t1, e, d)"])
+    assert not through_e and "its cost length(a, e) has no value" in through_e.reason
+    assert catplan.validate(m["ToDInSteps"], ["drive(t1, a, d)"]).cost is None
+
+
 def test_plans_from_text_steps_and_tuples():
     p = catplan.Plan(["unstack(E, D)", catplan.Step("putdown", ["E"]), ("pickup", ["B"])])
     assert [str(s) for s in p] == ["unstack(E, D)", "putdown(E)", "pickup(B)"]
