@@ -48,6 +48,7 @@ cases=(
 "hanoi>blocks|examples/hanoi_to_blocks/hanoi_to_blocks.cp|--problem ThreeDiscs --map HanoiToBlocks|examples/hanoi/hanoi.plan"
 "sandwich>color|examples/kitchen_to_colorblocks/kitchen_to_color.cp|--problem MakeSandwich --map KitchenToColor|examples/sandwich_kitchen/sandwich.plan"
 "casestudy>warehouse|examples/kitchen_to_warehouse/kitchen_to_warehouse.cp|--problem CaseStudy --map ColorToWarehouse|examples/colorblocksworld/paper.plan"
+"roads|tests/cli/data/roads.cp|--problem ToD|tests/cli/data/roads_cheapest.plan"
 )
 
 bad=0
@@ -98,6 +99,22 @@ for c in "${cases[@]}"; do
     for v in "$v1" "$v2" "$v3" "$v4"; do
         case $v in valid | -) ;; *) bad=1 ;; esac
     done
+done
+# Action costs read from a problem's functions: catplan's A* on the .cp problem and FD's
+# astar(lmcut()) on its export find plans of one least cost, and VAL values FD's plan at it.
+for c in "tests/cli/data/roads.cp|ToD"; do
+    IFS='|' read -r file problem <<<"$c"
+    d=$work/costs.domain.pddl p=$work/costs.problem.pddl
+    "$catplan" pddl export "$file" --problem "$problem" -o "$d" --problem-output "$p" 2>/dev/null
+    ours=$("$catplan" plan "$file" --problem "$problem" --search astar --no-timing | sed -n 's/^# cost = //p')
+    (cd "$work" && rm -f sas_plan && "$fd" --overall-time-limit 60s "$d" "$p" --search "astar(lmcut())" >"$work/fd.log" 2>&1)
+    theirs=$(sed -n 's/^; cost = \([0-9]*\).*/\1/p' "$work/sas_plan" 2>/dev/null)
+    val_value=$("$val" "$d" "$p" "$work/sas_plan" 2>/dev/null | sed -n 's/^Final value: *\([0-9]*\).*/\1/p')
+    printf 'least cost of %s %s: catplan astar %s, FD astar(lmcut()) %s, VAL %s\n' "$file" "$problem" \
+        "${ours:-none}" "${theirs:-none}" "${val_value:-none}"
+    if [ -z "$ours" ] || [ "$ours" != "$theirs" ] || [ "$ours" != "$val_value" ]; then
+        bad=1
+    fi
 done
 if [ $bad -ne 0 ]; then
     echo "interop: some check disagrees"
