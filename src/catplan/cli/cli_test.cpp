@@ -144,6 +144,25 @@ TEST(PddlImport, WritesAFileThatLoadsWithPddlNamesQuoted) {
     std::remove(file.c_str());
 }
 
+TEST(PddlImport, CostsReadFromFunctionsLoadBackAndPlanToTheSameCost) {
+    // lift's actions cost (travel-slow ?f1 ?f2), a value each problem gives: the written file
+    // keeps the cost terms and the values, and A* finds a plan of the same least cost on it.
+    std::string dir = std::string(CATPLAN_SOURCE_DIR) + "/tests/pddl/";
+    std::string file = ::testing::TempDir() + "catplan_import_lift.cp";
+    auto r =
+        run_args({"pddl", "import", dir + "lift-domain.pddl", dir + "lift-p01.pddl", "-o", file});
+    ASSERT_EQ(r.code, kOk) << r.err;
+    auto pddl = run_args({"plan", dir + "lift-domain.pddl", dir + "lift-p01.pddl", "--search",
+                          "astar", "--no-timing"});
+    ASSERT_EQ(pddl.code, kOk) << pddl.err;
+    EXPECT_NE(pddl.out.find("; cost = 19 (general cost)"), std::string::npos) << pddl.out;
+    auto cp = run_args({"plan", file, "--problem", "lift-p01", "--search", "astar", "--no-timing"});
+    ASSERT_EQ(cp.code, kOk) << cp.err;
+    EXPECT_NE(cp.out.find("# cost = 19\n"), std::string::npos) << cp.out;
+    EXPECT_NE(cp.out.find("summing action costs; optimal"), std::string::npos) << cp.out;
+    std::remove(file.c_str());
+}
+
 TEST(NumericOptions, EveryLimitOptionIsChecked) {
     auto r = run_args({"plan", "a.cp", "--problem", "P", "--max-time", "-1"});
     EXPECT_EQ(r.code, kBadInput);
