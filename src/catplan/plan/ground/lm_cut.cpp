@@ -34,14 +34,14 @@ public:
             cost_[a] = actions[a].cost;
         }
         r_.props_of(state, init_);
+        hmax();
         int h = 0;
         for (;;) {
             budget_.poll();
-            hmax();
             int g = 0;
             for (Prop p : r_.goal()) {
                 if (value_[p] == kInf) {
-                    return kDeadEnd;
+                    return kDeadEnd; // lowering costs reaches nothing new: only the first time
                 }
                 g = std::max(g, value_[p]);
             }
@@ -55,6 +55,7 @@ public:
             for (std::uint32_t a : cut_) {
                 cost_[a] -= m;
             }
+            hmax_after_cut();
         }
     }
 
@@ -69,30 +70,19 @@ private:
         unsat_.resize(actions.size());
         acc_.assign(actions.size(), 0);
         supporter_.assign(actions.size(), kNone);
-        using Item = std::pair<int, Prop>;
-        std::priority_queue<Item, std::vector<Item>, std::greater<>> queue;
         for (Prop p : init_) {
             value_[p] = 0;
-            queue.push({0, p});
+            queue_.push({0, p});
         }
         for (std::uint32_t a = 0; a < actions.size(); ++a) {
             unsat_[a] = static_cast<std::uint32_t>(actions[a].pre.size());
         }
-        auto fire = [&](std::uint32_t a) {
-            int c = acc_[a] + cost_[a];
-            for (Prop q : actions[a].add) {
-                if (c < value_[q]) {
-                    value_[q] = c;
-                    queue.push({c, q});
-                }
-            }
-        };
         for (std::uint32_t a : r_.unconditional()) {
-            fire(a);
+            lower_effects(a, cost_[a]);
         }
-        while (!queue.empty()) {
-            auto [c, p] = queue.top();
-            queue.pop();
+        while (!queue_.empty()) {
+            auto [c, p] = queue_.top();
+            queue_.pop();
             if (c > value_[p]) {
                 continue;
             }
@@ -102,8 +92,51 @@ private:
                     supporter_[a] = p; // the last precondition reached has the largest value
                 }
                 if (--unsat_[a] == 0) {
-                    fire(a);
+                    lower_effects(a, acc_[a] + cost_[a]);
                 }
+            }
+        }
+    }
+
+    // h_max again after the cut's costs were lowered. Lower costs only lower values, so only
+    // what the cut's actions reach can change: their effects are lowered and the change is
+    // propagated, each action whose supporter got cheaper taking the largest of its
+    // preconditions again (it may now be another one). Much cheaper than hmax() from scratch,
+    // since a cut is small; the values are the same, a supporter among equals may differ.
+    void hmax_after_cut() {
+        const auto& actions = r_.actions();
+        for (std::uint32_t a : cut_) {
+            lower_effects(a, acc_[a] + cost_[a]);
+        }
+        while (!queue_.empty()) {
+            auto [c, p] = queue_.top();
+            queue_.pop();
+            if (c > value_[p]) {
+                continue;
+            }
+            for (std::uint32_t a : r_.pre_of(p)) {
+                if (supporter_[a] != p || unsat_[a] != 0 || acc_[a] <= c) {
+                    continue;
+                }
+                Prop best = p;
+                for (Prop q : actions[a].pre) {
+                    best = value_[q] > value_[best] ? q : best;
+                }
+                supporter_[a] = best;
+                if (value_[best] < acc_[a]) {
+                    acc_[a] = value_[best];
+                    lower_effects(a, acc_[a] + cost_[a]);
+                }
+            }
+        }
+    }
+
+    // Lowers the values of a's effects to c where c is less, queueing them.
+    void lower_effects(std::uint32_t a, int c) {
+        for (Prop q : r_.actions()[a].add) {
+            if (c < value_[q]) {
+                value_[q] = c;
+                queue_.push({c, q});
             }
         }
     }
@@ -188,6 +221,8 @@ private:
     std::vector<std::uint32_t> unsat_, cut_;
     std::vector<Prop> supporter_, init_;
     std::vector<char> zone_, seen_, in_cut_;
+    using Item = std::pair<int, Prop>;
+    std::priority_queue<Item, std::vector<Item>, std::greater<>> queue_;
 };
 
 } // namespace
