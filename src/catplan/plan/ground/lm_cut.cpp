@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <limits>
 #include <queue>
+#include <tuple>
 
 namespace catplan::plan::ground {
 
@@ -80,12 +81,9 @@ private:
         for (std::uint32_t a : r_.unconditional()) {
             lower_effects(a, cost_[a]);
         }
-        while (!queue_.empty()) {
-            auto [c, p] = queue_.top();
-            queue_.pop();
-            if (c > value_[p]) {
-                continue;
-            }
+        int c = 0;
+        Prop p = 0;
+        while (pop(c, p)) {
             for (std::uint32_t a : r_.pre_of(p)) {
                 if (c >= acc_[a]) {
                     acc_[a] = c;
@@ -108,12 +106,9 @@ private:
         for (std::uint32_t a : cut_) {
             lower_effects(a, acc_[a] + cost_[a]);
         }
-        while (!queue_.empty()) {
-            auto [c, p] = queue_.top();
-            queue_.pop();
-            if (c > value_[p]) {
-                continue;
-            }
+        int c = 0;
+        Prop p = 0;
+        while (pop(c, p)) {
             for (std::uint32_t a : r_.pre_of(p)) {
                 if (supporter_[a] != p || unsat_[a] != 0 || acc_[a] <= c) {
                     continue;
@@ -129,6 +124,18 @@ private:
                 }
             }
         }
+    }
+
+    // The next proposition of the queue whose value is still the one it was queued with.
+    bool pop(int& c, Prop& p) {
+        while (!queue_.empty()) {
+            std::tie(c, p) = queue_.top();
+            queue_.pop();
+            if (c == value_[p]) {
+                return true;
+            }
+        }
+        return false;
     }
 
     // Lowers the values of a's effects to c where c is less, queueing them.
