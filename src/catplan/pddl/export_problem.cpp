@@ -254,8 +254,9 @@ std::string goal_action_name(const plan::Domain& d) {
 }
 
 /// The problem's function values as `(= (road-length a d) 20)`, each argument the PDDL object of
-/// the part it names.
-Result<std::vector<std::string>> value_facts(const plan::Problem& p, const Things& init) {
+/// the part it names; a value of a function no action's cost reads (not declared) is left out.
+Result<std::vector<std::string>> value_facts(const Writer& w, const plan::Problem& p,
+                                             const Things& init) {
     std::map<std::string, std::string> object; // part name -> PDDL object
     const acset::ACSet& x = *p.initial;
     for (const Thing& t : init.things) {
@@ -267,6 +268,10 @@ Result<std::vector<std::string>> value_facts(const plan::Problem& p, const Thing
     }
     std::vector<std::string> out;
     for (const auto& v : p.values) {
+        std::string f = detail::pddl_name(v.function, "f");
+        if (w.functions.count(f) == 0) {
+            continue;
+        }
         std::string args;
         for (const auto& a : v.args) {
             auto it = object.find(a);
@@ -277,8 +282,7 @@ Result<std::vector<std::string>> value_facts(const plan::Problem& p, const Thing
             }
             args += " " + it->second;
         }
-        out.push_back(
-            fmt::format("(= ({}{}) {})", detail::pddl_name(v.function, "f"), args, v.value));
+        out.push_back(fmt::format("(= ({}{}) {})", f, args, v.value));
     }
     return out;
 }
@@ -309,7 +313,7 @@ Result<std::string> problem_text(Writer& w, const GoalText& goal,
     out += fmt::format("  (:objects {})\n", fmt::join(objects, " "));
     bool costs = plan::has_costs(*p.domain) && !p.counts_steps;
     if (plan::has_costs(*p.domain)) {
-        auto values = value_facts(p, *init);
+        auto values = value_facts(w, p, *init);
         if (!values) {
             return fail(values.error());
         }
