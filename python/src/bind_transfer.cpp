@@ -300,6 +300,16 @@ leaves unsatisfied, in words.)doc")
                       "Levenshtein distance between the transferred and the replanned steps.");
 }
 
+// A plan's cost where the source problem sums costs and the plan has one.
+std::optional<std::int64_t> cost_of(const PyTransfer& r, bool source) {
+    auto costs = transfer::plan_costs(*r.t, *r.problem.ptr, r.plan);
+    if (!costs) {
+        return std::nullopt;
+    }
+    const auto& c = source ? costs->source : costs->target;
+    return c ? std::optional(*c) : std::nullopt;
+}
+
 void bind_transfer_result(py::module_& m) {
     py::class_<PyTransfer>(m, "Transfer", "The outcome of a plan transfer along an ontology map.")
         .def_property_readonly("steps", &steps)
@@ -327,6 +337,13 @@ void bind_transfer_result(py::module_& m) {
                                    }
                                    return p;
                                })
+        .def_property_readonly(
+            "source_cost", [](const PyTransfer& r) { return cost_of(r, true); },
+            "The source plan's cost where the problem's rules say costs (else None).")
+        .def_property_readonly(
+            "target_cost", [](const PyTransfer& r) { return cost_of(r, false); },
+            "The target plan's cost in the generated actions, which read the source problem's "
+            "function values carried by name (None without costs or where a value is missing).")
         .def_property_readonly(
             "target_domain",
             [](const PyTransfer& r) -> std::optional<PyDomain> {

@@ -88,3 +88,16 @@ def test_replanning_and_the_report(case_study, paper_plan):
     html = t.report(no_timing=True)
     assert html.startswith("<!DOCTYPE html>") and "ColorToKitchen" in html
     assert "<svg" in html
+
+
+def test_costs_are_carried_by_name(source_dir):
+    m = catplan.load(str(source_dir / "tests/cli/data/roads_to_transit.cp"))
+    cheapest = ["drive(t1, a, b)", "drive(t1, b, c)", "drive(t1, c, d)"]
+    t = catplan.transfer(m["TransitToRoads"], m["ToD"], cheapest)
+    assert t.valid and (t.source_cost, t.target_cost) == (12, 12)
+    # The map forgets the cities that the cost reads: the target plan has no cost.
+    lost = catplan.transfer(m["BusesToRoads"], m["ToD"], cheapest)
+    assert lost.valid and (lost.source_cost, lost.target_cost) == (12, None)
+    # Measured by steps, neither plan has a cost.
+    steps = catplan.transfer(m["TransitToRoads"], m["ToDInSteps"], cheapest)
+    assert (steps.source_cost, steps.target_cost) == (None, None)

@@ -347,24 +347,11 @@ int plan_exit_code(plan::SearchStatus status) {
 
 namespace {
 
-/// The cost of a plan found on problem (its steps name rules), when the problem sums costs.
-std::optional<std::int64_t> plan_cost(const plan::Problem& problem, const plan::Plan& plan) {
-    if (!problem.step_cost) {
-        return std::nullopt;
-    }
-    std::int64_t total = 0;
-    for (const auto& step : plan.steps) {
-        const auto* rule = problem.domain->find_rule(step.action);
-        CATPLAN_ASSERT(rule != nullptr, "a found plan names the domain's rules");
-        auto c = plan::step_cost(problem, *rule, step.args);
-        if (!c) {
-            return std::nullopt; // a found plan is validated: not reached
-        }
-        if (__builtin_add_overflow(total, *c, &total)) {
-            return std::numeric_limits<std::int64_t>::max();
-        }
-    }
-    return total;
+/// Whether every rule costs 1: a search that counts steps then finds the least cost.
+bool unit_costs(const plan::Domain& d) {
+    return std::all_of(d.rules.begin(), d.rules.end(), [](const auto& r) {
+        return !r->cost || (r->cost->constant == 1 && r->cost->terms.empty());
+    });
 }
 
 int cmd_plan(const PlanArgs& a, std::ostream& out, std::ostream& err) {
@@ -395,7 +382,17 @@ int cmd_plan(const PlanArgs& a, std::ostream& out, std::ostream& err) {
     auto r = plan::find_plan(*problem, options);
     std::optional<std::int64_t> cost;
     if (r.plan) {
-        cost = plan_cost(*problem, *r.plan);
+        if (problem->step_cost) {
+            auto c = plan::plan_cost(*problem, r.plan->steps);
+            if (!c) {
+                // The grounded search leaves such steps out; the C-set search does not read costs.
+                error(err, fmt::format("the plan found is not valid: {} (the C-set search does "
+                                       "not read costs, so it cannot avoid a step without one)",
+                                       c.error()));
+                return kUnsupported;
+            }
+            cost = *c;
+        }
         r.plan = plan::action_plan(*problem->domain, *r.plan); // as the user writes them
     }
     int rc = plan_exit_code(r.status);
@@ -414,12 +411,17 @@ int cmd_plan(const PlanArgs& a, std::ostream& out, std::ostream& err) {
         auto j = plan_json(r, a.search, std::move(steps), !a.no_timing);
         if (cost) {
             j["cost"] = *cost;
+            j["optimal"] = r.optimal && (r.costs || unit_costs(*problem->domain));
         }
         out << j.dump(2) << "\n";
         return rc;
     }
     out << text << (cost ? fmt::format("# cost = {}\n", *cost) : "")
         << plan_summary(r, a.search, r.plan ? r.plan->steps.size() : 0, !a.no_timing, "# ");
+    if (cost && r.optimal && !r.costs && !unit_costs(*problem->domain)) {
+        out << "# the search counted every step as 1: the plan is shortest, its cost may not be "
+               "the least\n";
+    }
     return rc;
 }
 

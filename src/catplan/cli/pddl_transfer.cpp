@@ -181,11 +181,19 @@ int finish_pddl_transfer(const TransferInputs& in, const TransferArgs& a,
     if (c.comparison) {
         word_comparison(*c.comparison, checks);
     }
+    if (!c.uncarried_values.empty()) {
+        checks.text += fmt::format("note: {} value(s) of the source problem the map's functions "
+                                   "section names are not carried: {} (an argument is no "
+                                   "object of Δ_F(I) of the target function's type)\n",
+                                   c.uncarried_values.size(), fmt::join(c.uncarried_values, ", "));
+        checks.json["uncarried_values"] = c.uncarried_values;
+    }
     if (c.target_cost) {
         checks.text += "target plan cost: " + pddl::describe_cost(*c.target_cost) +
                        (c.target_cost->undefined.empty() || st.target_problem
                             ? "\n"
-                            : " (--target-problem gives the target's values)\n");
+                            : " (--target-problem, or the map's functions section, gives the "
+                              "target's values)\n");
         checks.json["target_cost"] = cost_json(*c.target_cost);
     }
     word_validation(st, c, checks);

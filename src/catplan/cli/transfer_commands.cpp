@@ -163,7 +163,21 @@ struct Outcome {
     transfer::TransferResult t;
     long transfer_peak_kib = 0;
     std::optional<transfer::Replan> replan;
+    /// What the source and target plans cost, where a `.cp` source problem sums costs.
+    std::optional<transfer::PlanCosts> costs;
 };
+
+std::string cost_text(const Result<std::int64_t>& c) {
+    return c ? std::to_string(*c) : "undefined: " + c.error();
+}
+
+// As a PDDL transfer's costs are written: {"total": 12}, or {"total": null, "undefined": why}.
+nlohmann::ordered_json cost_json(const Result<std::int64_t>& c) {
+    if (!c) {
+        return {{"total", nullptr}, {"undefined", c.error()}};
+    }
+    return {{"total", *c}};
+}
 
 std::string text_report(const TransferCommandArgs& a, const TransferInputs& in, const Outcome& r) {
     const auto& t = r.t;
@@ -221,6 +235,10 @@ std::string text_report(const TransferCommandArgs& a, const TransferInputs& in, 
     for (const auto& u : goal.unsatisfied) {
         o += fmt::format("  unsatisfied: {}\n", u);
     }
+    if (r.costs) {
+        o += fmt::format("source plan cost: {}\ntarget plan cost: {}\n", cost_text(r.costs->source),
+                         cost_text(r.costs->target));
+    }
     if (!a.no_timing) {
         const auto& tm = t.timings;
         o += fmt::format("time: {:.3f} ms (migrate {:.3f}, replay and apply {:.3f}, validate "
@@ -231,8 +249,9 @@ std::string text_report(const TransferCommandArgs& a, const TransferInputs& in, 
         o += fmt::format("replanning in {} ({}): {}", t.target_domain.domain->name, a.in.search,
                          plan::to_string(rp->search.status));
         if (rp->search.plan) {
-            o += fmt::format(", {}, edit distance to the transferred plan {}",
-                             step_count(rp->steps.size()), rp->edit_distance);
+            o += fmt::format(
+                ", {}{}, edit distance to the transferred plan {}", step_count(rp->steps.size()),
+                rp->cost ? fmt::format(" (cost {})", *rp->cost) : "", rp->edit_distance);
         }
         o += fmt::format("; expanded {}\n", rp->search.stats.expanded);
         bool mixed = false;
@@ -300,6 +319,10 @@ nlohmann::ordered_json json_report(const TransferCommandArgs& a, const TransferI
         actions.push_back(rule->name);
     }
     j["generated_actions"] = actions;
+    if (r.costs) {
+        j["source_cost"] = cost_json(r.costs->source);
+        j["target_cost"] = cost_json(r.costs->target);
+    }
     if (!a.no_timing) {
         const auto& tm = t.timings;
         j["timings_ms"] = {{"migrate", tm.migrate_ms},
@@ -314,6 +337,9 @@ nlohmann::ordered_json json_report(const TransferCommandArgs& a, const TransferI
         k["status"] = std::string(plan::to_string(rp.search.status));
         k["plan"] = plan_strings(rp.steps);
         k["edit_distance"] = rp.edit_distance;
+        if (rp.cost) {
+            k["cost"] = *rp.cost;
+        }
         k["expanded"] = rp.search.stats.expanded;
         if (!a.no_timing) {
             k["ms"] = rp.ms;
@@ -336,6 +362,9 @@ Outcome run_transfer(const TransferCommandArgs& a, const TransferInputs& in, std
     Outcome r;
     r.t = transfer::transfer_plan(*in.map, *in.problem, in.plan, options);
     r.transfer_peak_kib = catplan::peak_rss_kib();
+    if (!in.pddl) {
+        r.costs = transfer::plan_costs(r.t, *in.problem, in.plan);
+    }
     if (a.in.replan) {
         r.replan = transfer::replan(r.t, replan_options(a.in, err));
     }

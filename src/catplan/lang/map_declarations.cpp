@@ -49,11 +49,11 @@ bool binary_header(DiagnosticSink& sink, const MacroCall& form, std::string_view
 }
 
 void add_map(Elaborator& ctx, const std::string& name, SourceRange range, bool imported,
-             std::shared_ptr<const migrate::SchemaMap> map,
-             std::vector<ActionCorrespondence> actions = {}) {
+             std::shared_ptr<const migrate::SchemaMap> map, MapSections sections = {}) {
     Declaration d = new_declaration(DeclKind::Map, name, range, imported, map->target());
     d.map = std::move(map);
-    d.actions = std::move(actions);
+    d.actions = std::move(sections.actions);
+    d.functions = std::move(sections.functions);
     ctx.module.add(std::move(d));
 }
 
@@ -104,11 +104,11 @@ void elaborate_map_declaration(Elaborator& ctx, const MacroCall& written, bool i
     mf.target = t;
     mf.source = s;
     mf.body = &form.body;
-    std::vector<ActionCorrespondence> actions;
-    add_pddl_hooks(ctx, mf, actions);
+    MapSections sections;
+    add_pddl_hooks(ctx, mf, sections);
     auto map = elaborate_map(mf, sink);
     if (map && ctx.claim_name(mf.name, mf.name_range)) {
-        add_map(ctx, mf.name, mf.name_range, imported, std::move(map), std::move(actions));
+        add_map(ctx, mf.name, mf.name_range, imported, std::move(map), std::move(sections));
     }
 }
 

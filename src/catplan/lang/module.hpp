@@ -48,6 +48,19 @@ struct ActionCorrespondence {
     SourceRange range;
 };
 
+/// An entry of a map's `functions` section (`travel-time => road-length`): the target's function
+/// takes the source problem's values of the source's function, at the same objects.
+struct FunctionCorrespondence {
+    std::string target, source;
+    SourceRange range;
+};
+
+/// A map's sections beyond its entries, between PDDL domains.
+struct MapSections {
+    std::vector<ActionCorrespondence> actions;
+    std::vector<FunctionCorrespondence> functions;
+};
+
 struct Declaration {
     DeclKind kind = DeclKind::Schema;
     std::string name;
@@ -68,8 +81,9 @@ struct Declaration {
     std::string initial_name, goal_name;
     /// Maps only: the finished, valid ontology map (map->target() is D', map->source() is D).
     std::shared_ptr<const migrate::SchemaMap> map;
-    /// Maps only: the actions section, in the order written.
+    /// Maps only: the actions and functions sections, in the order written.
     std::vector<ActionCorrespondence> actions;
+    std::vector<FunctionCorrespondence> functions;
     /// Domains and problems read from a PDDL file (`@import "x.pddl"`): the import, with the
     /// PDDL names of the schema's generators and the rules' actions.
     std::shared_ptr<const pddl::Import> pddl;

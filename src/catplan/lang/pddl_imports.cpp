@@ -2,7 +2,8 @@
 // domain (its schema and its domain both named as the file's `(domain ...)` is) or a problem of
 // an imported domain; a map over PDDL schemas may spell names with hyphens (`courier-in`), gets
 // the entries that PDDL's structure implies (is-a homs, argument homs, object names), and may
-// name the target action of source actions in an `actions` section.
+// name the target action of source actions in an `actions` section and the source function whose
+// values a target function takes in a `functions` section.
 
 #include "catplan/lang/detail/elaboration.hpp"
 #include "catplan/lang/detail/elaborator.hpp"
@@ -370,6 +371,9 @@ void spell_pddl_names(const Elaborator& ctx, MacroCall& form) {
         for (const auto& a : im->pddl_domain.actions) {
             known.insert(a.name);
         }
+        for (const auto& f : im->pddl_domain.functions) {
+            known.insert(f.name);
+        }
     }
     for (auto& h : form.header) {
         spell(h, ctx.sources, known);
@@ -379,8 +383,65 @@ void spell_pddl_names(const Elaborator& ctx, MacroCall& form) {
     }
 }
 
-void add_pddl_hooks(const Elaborator& ctx, MapForm& mf,
-                    std::vector<ActionCorrespondence>& actions) {
+namespace {
+
+/// `source_action => target_action` of an actions section.
+void read_action(const Expr& e, const pddl::Import* t, const pddl::Import* s, DiagnosticSink& sink,
+                 MapSections& out) {
+    const std::string &from = e.args[0].text, &to = e.args[1].text;
+    if (s != nullptr && s->pddl_domain.find_action(from) == nullptr) {
+        sink.error(e.args[0].range, fmt::format("'{}' is not an action of the source domain '{}'",
+                                                from, s->pddl_domain.name));
+    } else if (t != nullptr && t->pddl_domain.find_action(to) == nullptr) {
+        sink.error(e.args[1].range, fmt::format("'{}' is not an action of the target domain '{}'",
+                                                to, t->pddl_domain.name));
+    } else {
+        out.actions.push_back({from, to, e.range});
+    }
+}
+
+/// The function `name` of the domain an action's cost may read, or nullptr with the error.
+const pddl::Function* cost_function(const Expr& name, const pddl::Import& im, const char* side,
+                                    DiagnosticSink& sink) {
+    const pddl::Function* f = im.pddl_domain.find_function(name.text);
+    if (f == nullptr || f->name == "total-cost") {
+        sink.error(name.range, fmt::format("'{}' is not a function of the {} domain '{}'{}",
+                                           name.text, side, im.pddl_domain.name,
+                                           f != nullptr ? " whose values a problem gives" : ""));
+        return nullptr;
+    }
+    return f;
+}
+
+/// `target_function => source_function` of a functions section.
+void read_function(const Expr& e, const pddl::Import& t, const pddl::Import& s,
+                   DiagnosticSink& sink, MapSections& out) {
+    const auto* to = cost_function(e.args[0], t, "target", sink);
+    const auto* from = cost_function(e.args[1], s, "source", sink);
+    if (to == nullptr || from == nullptr) {
+        return;
+    }
+    if (to->params.size() != from->params.size()) {
+        sink.error(e.range,
+                   fmt::format("'{}' takes {} argument(s) and '{}' {}: a function "
+                               "takes the values of one with as many",
+                               to->name, to->params.size(), from->name, from->params.size()));
+        return;
+    }
+    for (const auto& c : out.functions) {
+        if (c.target == to->name) {
+            sink.error(e.args[0].range, fmt::format("'{}' is given twice in the functions "
+                                                    "section",
+                                                    to->name));
+            return;
+        }
+    }
+    out.functions.push_back({to->name, from->name, e.range});
+}
+
+} // namespace
+
+void add_pddl_hooks(const Elaborator& ctx, MapForm& mf, MapSections& sections) {
     const pddl::Import* t = pddl_of(ctx, *mf.target);
     const pddl::Import* s = pddl_of(ctx, *mf.source);
     SourceRange at = mf.name_range;
@@ -390,30 +451,28 @@ void add_pddl_hooks(const Elaborator& ctx, MapForm& mf,
         };
     }
     DiagnosticSink* sink = &ctx.sink;
-    mf.other_statement = [t, s, sink, &actions](const Expr& st) {
+    mf.other_statement = [t, s, sink, &sections](const Expr& st) {
         if (!st.is_binary("=>") || st.args[0].kind != Expr::Kind::Name ||
-            st.args[0].text != "actions" || st.args[1].kind != Expr::Kind::Block) {
+            st.args[1].kind != Expr::Kind::Block ||
+            (st.args[0].text != "actions" && st.args[0].text != "functions")) {
             return false;
+        }
+        bool actions = st.args[0].text == "actions";
+        if (!actions && (t == nullptr || s == nullptr)) {
+            sink->error(st.range, "a functions section needs a map between two PDDL domains");
+            return true;
         }
         for (const Expr& e : st.args[1].args) {
             if (!e.is_binary("=>") || e.args[0].kind != Expr::Kind::Name ||
                 e.args[1].kind != Expr::Kind::Name) {
-                sink->error(e.range, fmt::format("expected 'source_action => target_action' in "
-                                                 "the actions section, found '{}'",
-                                                 to_string(e)));
-                continue;
-            }
-            const std::string &from = e.args[0].text, &to = e.args[1].text;
-            if (s != nullptr && s->pddl_domain.find_action(from) == nullptr) {
-                sink->error(e.args[0].range, fmt::format("'{}' is not an action of the source "
-                                                         "domain '{}'",
-                                                         from, s->pddl_domain.name));
-            } else if (t != nullptr && t->pddl_domain.find_action(to) == nullptr) {
-                sink->error(e.args[1].range, fmt::format("'{}' is not an action of the target "
-                                                         "domain '{}'",
-                                                         to, t->pddl_domain.name));
+                sink->error(e.range, fmt::format("expected '{}' in the {} section, found '{}'",
+                                                 actions ? "source_action => target_action"
+                                                         : "target_function => source_function",
+                                                 st.args[0].text, to_string(e)));
+            } else if (actions) {
+                read_action(e, t, s, *sink, sections);
             } else {
-                actions.push_back({from, to, e.range});
+                read_function(e, *t, *s, *sink, sections);
             }
         }
         return true;

@@ -7,6 +7,7 @@
 #include "catplan/pddl/steps.hpp"
 
 #include <fmt/format.h>
+#include <map>
 #include <set>
 
 namespace catplan::pddl_transfer {
@@ -84,6 +85,51 @@ std::vector<std::string> only_in(const pddl::Problem& a, const pddl::Problem& b)
     return out;
 }
 
+/// The type of each object and constant of p (a problem of d).
+std::map<std::string, std::string> object_types(const pddl::Domain& d, const pddl::Problem& p) {
+    std::map<std::string, std::string> out;
+    for (const auto& c : d.constants) {
+        out.emplace(c.name, c.type);
+    }
+    for (const auto& o : p.objects) {
+        out.emplace(o.name, o.type);
+    }
+    return out;
+}
+
+/// The source problem's values of the functions the map's functions section names, as values of
+/// the target's functions in `migrated` (g(a, b) = f(a, b) where the map says g => f): Δ_F keeps
+/// the objects' names. A value some argument of which is no object of `migrated` of g's type is
+/// left out and named in `left_out`.
+std::vector<pddl::FunctionValue> carried_values(const Setting& s, const pddl::Problem& migrated,
+                                                std::vector<std::string>& left_out) {
+    const pddl::Domain& target = s.target->pddl_domain;
+    auto types = object_types(target, migrated);
+    std::vector<pddl::FunctionValue> out;
+    for (const auto& c : s.functions) {
+        const pddl::Function* g = target.find_function(c.target);
+        CATPLAN_ASSERT(g != nullptr, "the map's functions section names the target's functions");
+        for (const auto& v : s.source->pddl_problem->values) {
+            if (v.term.predicate != c.source) {
+                continue;
+            }
+            bool fits = v.term.args.size() == g->params.size();
+            for (std::size_t i = 0; fits && i < v.term.args.size(); ++i) {
+                auto it = types.find(v.term.args[i].name);
+                fits = it != types.end() && target.is_subtype(it->second, g->params[i].type);
+            }
+            if (!fits) {
+                left_out.push_back(v.term.to_string());
+                continue;
+            }
+            pddl::FunctionValue carried = v;
+            carried.term.predicate = g->name;
+            out.push_back(std::move(carried));
+        }
+    }
+    return out;
+}
+
 } // namespace
 
 std::shared_ptr<const pddl::Import> pddl_domain_on(const lang::Module& m,
@@ -119,6 +165,7 @@ std::optional<Setting> load_setting(const lang::Module& m, const lang::Declarati
         return std::nullopt;
     }
     s.source = std::make_shared<const pddl::Import>(std::move(*with_problem));
+    s.functions = map.functions;
     if (!add_target(m, map, s, sink)) {
         return std::nullopt;
     }
@@ -190,7 +237,9 @@ Checks check(const Setting& s, const pddl::IpcPlan& plan, const transfer::Transf
     CATPLAN_ASSERT(ipc.has_value(), "the target plan uses the target's rules");
     c.migrated = pddl::problem_of(*s.target, s.source->pddl_problem->name, *t.target_initial,
                                   *t.target_goal, t.target_goal_conditions);
-    if (s.target_problem) {
+    if (!s.target_problem) {
+        c.migrated->values = carried_values(s, *c.migrated, c.uncarried_values);
+    } else {
         // The target's function values (an action's cost) are the user's problem's.
         c.migrated->values = s.target_problem->values;
         c.comparison = Comparison{s.target_problem->name, only_in(*c.migrated, *s.target_problem),

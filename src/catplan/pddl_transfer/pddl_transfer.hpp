@@ -34,6 +34,8 @@ struct Setting {
     std::optional<pddl::Problem> target_problem;
     std::shared_ptr<const acset::ACSet> target_goal;
     std::vector<rewrite::ApplicationCondition> target_goal_conditions;
+    /// The map's functions section: (target function, source function) pairs.
+    std::vector<lang::FunctionCorrespondence> functions;
 };
 
 /// The PDDL import of a domain the module declares on this schema, or nullptr.
@@ -82,8 +84,13 @@ struct Checks {
     std::string plan_text;
     /// Where the target is a PDDL domain and the transfer reached a target state:
     std::optional<pddl::IpcPlan> target_plan;
-    /// Δ_F(I), Δ_F(G) as a PDDL problem of the target domain (its function values the user's).
+    /// Δ_F(I), Δ_F(G) as a PDDL problem of the target domain. Its function values are the
+    /// user's target problem's, else the source problem's carried along the map's functions
+    /// section (carried_values).
     std::optional<pddl::Problem> migrated;
+    /// Source values the functions section names that Δ_F(I) could not take: an argument that is
+    /// no object of Δ_F(I) of the target function's type (`(road-length a e)`).
+    std::vector<std::string> uncarried_values;
     /// The target plan's cost, when the target domain's actions have costs.
     std::optional<pddl::PlanCost> target_cost;
     std::optional<Comparison> comparison;

@@ -1,11 +1,27 @@
 #include "catplan/plan/costs.hpp"
 
+#include "catplan/base/assert.hpp"
+#include "catplan/plan/actions.hpp"
+
 #include <algorithm>
 #include <fmt/format.h>
 #include <limits>
 #include <memory>
 
 namespace catplan::plan {
+
+namespace {
+
+/// Whether a term of c reads a parameter a migration lost (an argument neither a parameter nor
+/// a part name).
+bool reads_lost_parameter(const rewrite::Cost& c) {
+    return std::any_of(c.terms.begin(), c.terms.end(), [](const rewrite::Cost::Term& t) {
+        return std::any_of(t.arguments.begin(), t.arguments.end(),
+                           [](const auto& a) { return a.parameter < 0 && a.constant.empty(); });
+    });
+}
+
+} // namespace
 
 FunctionTable::FunctionTable(const std::vector<FunctionValue>& values) {
     for (const auto& v : values) {
@@ -39,9 +55,7 @@ std::optional<std::int64_t> rule_cost(const Rule& rule, const std::vector<std::s
         if (!v) {
             return std::nullopt;
         }
-        if (__builtin_add_overflow(total, *v, &total)) {
-            total = std::numeric_limits<std::int64_t>::max();
-        }
+        total = add_cost(total, *v);
     }
     return total;
 }
@@ -55,7 +69,31 @@ Result<std::int64_t> step_cost(const Problem& p, const Rule& rule,
         return *c;
     }
     std::string what = rule.cost ? rule.cost->to_string(args) : "";
+    if (rule.cost && reads_lost_parameter(*rule.cost)) {
+        return fail(fmt::format("its cost {} reads a parameter its migration lost", what));
+    }
     return fail(fmt::format("its cost {} has no value in the problem", what));
+}
+
+std::int64_t add_cost(std::int64_t a, std::int64_t b) {
+    std::int64_t sum = 0;
+    return __builtin_add_overflow(a, b, &sum) ? std::numeric_limits<std::int64_t>::max() : sum;
+}
+
+Result<std::int64_t> plan_cost(const Problem& p, const std::vector<Step>& steps) {
+    CATPLAN_ASSERT(p.step_cost != nullptr, "the cost of a plan of a problem that sums costs");
+    std::int64_t total = 0;
+    for (std::size_t i = 0; i < steps.size(); ++i) {
+        const Rule* rule = p.domain->find_rule(steps[i].action);
+        CATPLAN_ASSERT(rule != nullptr, "a plan's steps name the domain's rules");
+        auto c = step_cost(p, *rule, steps[i].args);
+        if (!c) {
+            return fail(fmt::format("step {} {}: {}", i + 1, describe_step(*p.domain, steps[i]),
+                                    c.error()));
+        }
+        total = add_cost(total, *c);
+    }
+    return total;
 }
 
 bool has_costs(const Domain& domain) {

@@ -42,6 +42,14 @@ std::optional<std::int64_t> rule_cost(const Rule& rule, const std::vector<std::s
 Result<std::int64_t> step_cost(const Problem& p, const Rule& rule,
                                const std::vector<std::string>& args);
 
+/// a + b for costs: a sum beyond int64 is held at its maximum.
+std::int64_t add_cost(std::int64_t a, std::int64_t b);
+
+/// What the steps (each naming a rule of p's domain) cost under p, which sums costs
+/// (p.step_cost); fails at the first step without a cost ("step 3 drive(t1, a, e): its cost
+/// length(a, e) has no value in the problem").
+Result<std::int64_t> plan_cost(const Problem& p, const std::vector<Step>& steps);
+
 /// Whether some rule of the domain says what its steps cost.
 bool has_costs(const Domain& domain);
 

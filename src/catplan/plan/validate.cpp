@@ -7,7 +7,6 @@
 #include <algorithm>
 #include <charconv>
 #include <fmt/format.h>
-#include <limits>
 
 namespace catplan::plan {
 namespace {
@@ -458,8 +457,8 @@ Validation validate_plan(const Problem& problem, const Plan& plan, const Validat
             v.reason = fmt::format("{}: {}", prefix, cost.error());
             break;
         }
-        if (v.cost && __builtin_add_overflow(*v.cost, *cost, &*v.cost)) {
-            v.cost = std::numeric_limits<std::int64_t>::max();
+        if (v.cost) {
+            v.cost = add_cost(*v.cost, *cost);
         }
         auto applied = rewrite::rewrite_in_place(*rule, x, *m);
         if (!applied) {

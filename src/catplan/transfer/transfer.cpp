@@ -2,6 +2,7 @@
 
 #include "catplan/base/process.hpp"
 #include "catplan/migrate/migration.hpp"
+#include "catplan/plan/costs.hpp"
 #include "catplan/plan/validate.hpp"
 #include "catplan/rewrite/dpo.hpp"
 #include "catplan/transfer/correspond.hpp"
@@ -195,6 +196,13 @@ public:
             renaming_ = names_by_type(y0);
             rename_parts(y0, renaming_);
         }
+        out_.target_values = problem_.values;
+        for (auto& v : out_.target_values) {
+            for (auto& a : v.args) {
+                a = renamed(renaming_, a);
+            }
+        }
+        out_.counts_steps = problem_.counts_steps;
         out_.target_initial = std::make_shared<const ACSet>(y0);
         out_.target_goal = std::make_shared<const ACSet>(migrate::migrate(f_, *problem_.goal));
         out_.target_goal_conditions =
@@ -783,20 +791,49 @@ std::size_t edit_distance(const std::vector<plan::Step>& a, const std::vector<pl
     return row[b.size()];
 }
 
-Replan replan(const TransferResult& t, const plan::SearchOptions& options) {
+plan::Problem target_problem(const TransferResult& t) {
     CATPLAN_ASSERT(t.target_domain.domain && t.target_initial && t.target_goal,
-                   "replan needs a transfer's target problem");
-    plan::Problem problem;
+                   "a transfer's target problem");
+    plan::Problem p;
+    p.name = "target";
+    p.domain = t.target_domain.domain;
+    p.initial = t.target_initial;
+    p.goal = t.target_goal;
+    p.goal_conditions = t.target_goal_conditions;
+    p.values = t.target_values;
+    p.counts_steps = t.counts_steps;
+    plan::set_step_cost(p);
+    return p;
+}
+
+std::optional<PlanCosts> plan_costs(const TransferResult& t, const plan::Problem& problem,
+                                    const plan::Plan& plan) {
+    bool generated = std::all_of(t.steps.begin(), t.steps.end(), [](const StepTransfer& s) {
+        return s.kind == StepTransfer::Kind::Generated;
+    });
+    if (!problem.step_cost || !t.verdict.source_valid() || t.verdict.failed_step() != nullptr ||
+        !generated || !t.target_domain.domain) {
+        return std::nullopt;
+    }
+    plan::Problem target = target_problem(t);
+    CATPLAN_ASSERT(target.step_cost != nullptr, "generated actions cost what the source's do");
+    return PlanCosts{plan::plan_cost(problem, plan.steps),
+                     plan::plan_cost(target, target_plan(t.steps))};
+}
+
+Replan replan(const TransferResult& t, const plan::SearchOptions& options) {
+    plan::Problem problem = target_problem(t);
     problem.name = "replan";
-    problem.domain = t.target_domain.domain;
-    problem.initial = t.target_initial;
-    problem.goal = t.target_goal;
-    problem.goal_conditions = t.target_goal_conditions;
     Replan out;
     auto t0 = Clock::now();
     out.search = plan::find_plan(problem, options);
     out.ms = ms_since(t0);
     out.peak_rss_kib = peak_rss_kib();
+    if (out.search.plan && problem.step_cost) {
+        // None when the C-set search, which reads no costs, took a step without one.
+        auto cost = plan::plan_cost(problem, out.search.plan->steps);
+        out.cost = cost ? std::optional(*cost) : std::nullopt;
+    }
     if (out.search.plan) {
         for (const auto& s : out.search.plan->steps) {
             const auto* rule = problem.domain->find_rule(s.action);

@@ -39,6 +39,7 @@
 //   if (!t.verdict.valid()) std::cout << t.verdict.reason() << "\n";
 
 #include "catplan/acset/acset.hpp"
+#include "catplan/base/result.hpp"
 #include "catplan/hom/morphism.hpp"
 #include "catplan/migrate/schema_map.hpp"
 #include "catplan/plan/domain.hpp"
@@ -48,6 +49,7 @@
 #include "catplan/transfer/repair.hpp"
 #include "catplan/transfer/verdict.hpp"
 
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
@@ -164,6 +166,12 @@ struct TransferResult {
     std::shared_ptr<const ACSet> target_goal;    ///< Δ_F(G)
     /// Δ_F of the source problem's goal conditions, each Δ_F(n) : Δ_F(G) -> Δ_F(N).
     std::vector<rewrite::ApplicationCondition> target_goal_conditions;
+    /// The source problem's function values (what its rules' costs read), carried by name: a
+    /// part of Y_0 is named after the part of I it comes from (renamed with rename_by_type), and
+    /// a generated action's cost reads the source's functions at its migrated parameters.
+    std::vector<plan::FunctionValue> target_values;
+    /// Whether the source problem measures plans by steps although its rules say costs.
+    bool counts_steps = false;
     /// The steps transferred (all of them, or those before the one the verdict's failed_step
     /// names).
     std::vector<StepTransfer> steps;
@@ -182,6 +190,22 @@ struct TransferResult {
 TransferResult transfer_plan(const SchemaMap& f, const plan::Problem& problem,
                              const plan::Plan& plan, const TransferOptions& options = {});
 
+/// The target problem in the generated actions: Y_0, Δ_F(G) and its conditions, with the values
+/// carried (target_values), summing costs where the source problem does (plan/costs.hpp).
+plan::Problem target_problem(const TransferResult& t);
+
+/// What a plan and its transfer cost, where the source problem sums action costs.
+struct PlanCosts {
+    /// Each plan's cost, or why it has none (a value the problem does not give).
+    Result<std::int64_t> source, target;
+};
+
+/// The costs of plan (of problem) and of t, its transfer in the generated actions; nullopt when
+/// the problem sums no costs, the source plan is invalid, the transfer stopped at a step, or a
+/// step was carried out by the target's own actions (whose costs are the target problem's).
+std::optional<PlanCosts> plan_costs(const TransferResult& t, const plan::Problem& problem,
+                                    const plan::Plan& plan);
+
 /// A step of `rule` written with one argument per distinct parameter name (a migrated rule
 /// carries a parameter to every target object that has it: `unstack(E, D)`, not
 /// `unstack(E, E, D, D)`); parts one name binds that differ are joined with '|' (`stack(B|A,
@@ -198,6 +222,8 @@ struct Replan {
     long peak_rss_kib = 0;
     /// Levenshtein distance between the transferred and the replanned step lists.
     std::size_t edit_distance = 0;
+    /// The plan's cost, where the target problem sums costs (target_problem).
+    std::optional<std::int64_t> cost;
 };
 
 /// Plans from scratch in the transferred target problem (t must have a target domain, Y_0 and

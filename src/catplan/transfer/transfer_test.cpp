@@ -1,5 +1,6 @@
 #include "catplan/hom/isomorphism.hpp"
 #include "catplan/migrate/migration.hpp"
+#include "catplan/plan/costs.hpp"
 #include "catplan/transfer/correspond.hpp"
 #include "catplan/transfer/rename.hpp"
 #include "catplan/transfer/transfer.hpp"
@@ -248,6 +249,67 @@ TEST(Transfer, RenameByTypeNamesPartsAfterTheirMostSpecificType) {
     auto names = names_by_type(y0);
     EXPECT_EQ(names.at("A"), "bread1");
     EXPECT_EQ(names.at("D"), "item2");
+}
+
+// The fixture's problem with move costing 1 + dist(from, to), and the values of dist its plan
+// reads (B to C 5, D to A 7), but D to A only when `complete`.
+plan::ProblemPtr with_distances(const Fixture& fx, bool complete) {
+    auto rule = std::make_shared<rewrite::Rule>(*fx.problem->domain->rules[0]);
+    rule->cost = rewrite::Cost{1, {{"dist", {{1, {}}, {2, {}}}}}};
+    auto domain = std::make_shared<plan::Domain>(*fx.problem->domain);
+    domain->rules = {rule};
+    auto p = std::make_shared<plan::Problem>(*fx.problem);
+    p->domain = domain;
+    p->values = {{"dist", {"B", "C"}, 5, {}}, {"dist", {"A", "D"}, 100, {}}};
+    if (complete) {
+        p->values.push_back({"dist", {"D", "A"}, 7, {}});
+    }
+    plan::set_step_cost(*p);
+    return p;
+}
+
+TEST(Transfer, CostsAreCarriedByNameIntoTheGeneratedActions) {
+    Fixture fx;
+    auto p = with_distances(fx, true);
+    for (bool rename : {false, true}) {
+        Kitchen k = kitchen();
+        TransferOptions opt;
+        opt.rename_by_type = rename;
+        for (const SchemaMap& f : {renaming_map(fx.t, false), kitchen_map(fx.t, k)}) {
+            auto r = transfer_plan(f, *p, fx.plan, opt);
+            ASSERT_TRUE(r.verdict.valid()) << r.verdict.reason();
+            auto costs = plan_costs(r, *p, fx.plan);
+            ASSERT_TRUE(costs.has_value());
+            ASSERT_TRUE(costs->source.has_value()) << costs->source.error();
+            EXPECT_EQ(*costs->source, 14); // (1 + 5) + (1 + 7)
+            ASSERT_TRUE(costs->target.has_value()) << costs->target.error();
+            EXPECT_EQ(*costs->target, 14) << "renamed: " << rename;
+            // Replanning in the generated actions sums the same costs.
+            plan::Problem target = target_problem(r);
+            ASSERT_NE(target.step_cost, nullptr);
+        }
+    }
+    // Measured by steps, the problem sums no costs, and neither does its transfer.
+    auto steps = std::make_shared<plan::Problem>(*p);
+    steps->counts_steps = true;
+    plan::set_step_cost(*steps);
+    auto r = transfer_plan(renaming_map(fx.t, false), *steps, fx.plan);
+    EXPECT_FALSE(plan_costs(r, *steps, fx.plan).has_value());
+    EXPECT_EQ(target_problem(r).step_cost, nullptr);
+}
+
+TEST(Transfer, AStepWithoutAValueLeavesBothPlansWithoutACost) {
+    Fixture fx;
+    auto p = with_distances(fx, false);
+    auto r = transfer_plan(renaming_map(fx.t, false), *p, fx.plan);
+    ASSERT_TRUE(r.verdict.valid()) << r.verdict.reason();
+    auto costs = plan_costs(r, *p, fx.plan);
+    ASSERT_TRUE(costs.has_value());
+    ASSERT_FALSE(costs->source.has_value());
+    EXPECT_EQ(costs->source.error(),
+              "step 2 move(B, D, A): its cost 1 + dist(D, A) has no value in the problem");
+    ASSERT_FALSE(costs->target.has_value());
+    EXPECT_EQ(costs->target.error(), costs->source.error());
 }
 
 TEST(Transfer, ParametersTheMapCannotSeeAreReported) {

@@ -39,10 +39,9 @@ void import_pddl_file(Elaborator& ctx, std::uint32_t file, SourceRange at, bool 
 /// Rewrites names spelled with hyphens (`courier-in`, which parses as a subtraction) into names,
 /// where they name a generator or action of an imported PDDL domain.
 void spell_pddl_names(const Elaborator& ctx, MacroCall& form);
-/// Gives a map over PDDL schemas the entries PDDL's structure implies and reads its actions
-/// section into `actions`.
-void add_pddl_hooks(const Elaborator& ctx, MapForm& form,
-                    std::vector<ActionCorrespondence>& actions);
+/// Gives a map over PDDL schemas the entries PDDL's structure implies and reads its actions and
+/// functions sections into `sections`.
+void add_pddl_hooks(const Elaborator& ctx, MapForm& form, MapSections& sections);
 
 // ---- catlab.cpp
 // ----------------------------------------------------------------------------------

@@ -1,0 +1,1 @@
+plan tests/cli/data/roads.cp --problem ToD --no-ground --search bfs --no-timing
