@@ -116,6 +116,24 @@ for c in "tests/cli/data/roads.cp|ToD"; do
         bad=1
     fi
 done
+# Costs carried through a transfer between PDDL domains (a map's functions section): VAL values
+# the transferred plan on the written target problem at the cost catplan reports, and FD's
+# astar(lmcut()) finds that problem's least cost.
+for c in "tests/pddl/roads_to_transit.cp|ToTransit|tests/pddl/roads-domain.pddl|tests/pddl/transit-domain.pddl|tests/pddl/roads-p01.pddl|tests/pddl/roads-p01.plan"; do
+    IFS='|' read -r file map source_domain target_domain problem plan <<<"$c"
+    tp=$work/transfer.plan tq=$work/transfer.problem.pddl
+    ours=$("$catplan" transfer "$file" --map "$map" --problem "$problem" --plan "$plan" -o "$tp" \
+        --problem-output "$tq" --no-timing 2>/dev/null | sed -n 's/^target plan cost: \([0-9]*\).*/\1/p')
+    src=$("$val" "$source_domain" "$problem" "$plan" 2>/dev/null | sed -n 's/^Final value: *\([0-9]*\).*/\1/p')
+    val_value=$("$val" "$target_domain" "$tq" "$tp" 2>/dev/null | sed -n 's/^Final value: *\([0-9]*\).*/\1/p')
+    (cd "$work" && rm -f sas_plan && "$fd" --overall-time-limit 60s "$root/$target_domain" "$tq" --search "astar(lmcut())" >"$work/fd.log" 2>&1)
+    theirs=$(sed -n 's/^; cost = \([0-9]*\).*/\1/p' "$work/sas_plan" 2>/dev/null)
+    printf 'transfer %s along %s: source plan VAL %s; target plan catplan %s, VAL %s; FD astar(lmcut()) on the target problem %s\n' \
+        "$plan" "$map" "${src:-none}" "${ours:-none}" "${val_value:-none}" "${theirs:-none}"
+    if [ -z "$ours" ] || [ "$ours" != "$val_value" ] || [ "$ours" != "$src" ] || [ "$ours" != "$theirs" ]; then
+        bad=1
+    fi
+done
 if [ $bad -ne 0 ]; then
     echo "interop: some check disagrees"
     exit 1
