@@ -27,6 +27,7 @@ struct PyReplan {
     double ms = 0;
     long peak_rss_kib = 0;
     std::size_t edit_distance = 0;
+    std::optional<std::int64_t> cost;
 };
 
 std::shared_ptr<const acset::ACSet> rule_pre(const plan::DomainPtr& d, const std::string& name) {
@@ -91,7 +92,8 @@ PyReplan replan_of(const transfer::Replan& rp) {
                     stats_dict(rp.search.stats),
                     rp.ms,
                     rp.peak_rss_kib,
-                    rp.edit_distance};
+                    rp.edit_distance,
+                    rp.cost};
 }
 
 /// A goal for the map's target schema (ValueError for a state on another one).
@@ -297,7 +299,9 @@ leaves unsatisfied, in words.)doc")
         .def_readonly("ms", &PyReplan::ms)
         .def_readonly("peak_rss_kib", &PyReplan::peak_rss_kib)
         .def_readonly("edit_distance", &PyReplan::edit_distance,
-                      "Levenshtein distance between the transferred and the replanned steps.");
+                      "Levenshtein distance between the transferred and the replanned steps.")
+        .def_readonly("cost", &PyReplan::cost,
+                      "The replanned plan's cost where the problem's rules say costs (else None).");
 }
 
 // A plan's cost where the source problem sums costs and the plan has one.

@@ -95,6 +95,9 @@ def test_costs_are_carried_by_name(source_dir):
     cheapest = ["drive(t1, a, b)", "drive(t1, b, c)", "drive(t1, c, d)"]
     t = catplan.transfer(m["TransitToRoads"], m["ToD"], cheapest)
     assert t.valid and (t.source_cost, t.target_cost) == (12, 12)
+    # Replanning with A* sums the same costs: the fewest drives (a to d, 20) are not the cheapest.
+    astar = catplan.transfer(m["TransitToRoads"], m["ToD"], cheapest, replan=True, search="astar")
+    assert astar.replan.cost == 12 and len(astar.replan.steps) == 3
     # The map forgets the cities that the cost reads: the target plan has no cost.
     lost = catplan.transfer(m["BusesToRoads"], m["ToD"], cheapest)
     assert lost.valid and (lost.source_cost, lost.target_cost) == (12, None)
