@@ -149,5 +149,42 @@ end
         << sink.render();
 }
 
+TEST(PddlTransfer, TheFunctionsSectionCarriesTheSourceValuesToTheTargetFunctions) {
+    Loaded l("../../tests/pddl/roads_to_transit.cp");
+    auto s = l.setting("ToTransit", "../../tests/pddl/roads-p01.pddl");
+    ASSERT_TRUE(s.has_value()) << l.sink.render();
+    ASSERT_EQ(s->functions.size(), 1U);
+    auto plan = l.plan(*s, "../../tests/pddl/roads-p01.plan");
+    auto [t, c] = run(*s, plan);
+    ASSERT_TRUE(t.verdict.valid()) << t.verdict.reason();
+    ASSERT_TRUE(c.migrated.has_value() && c.target_cost.has_value());
+    // The five lengths the source problem gives, as travel times; total-cost is not carried.
+    ASSERT_EQ(c.migrated->values.size(), 5U);
+    EXPECT_EQ(c.migrated->values[0].term.to_string(), "(travel-time a d)");
+    EXPECT_EQ(c.migrated->values[0].value, 20);
+    EXPECT_EQ(c.target_cost->total, 12);
+    EXPECT_TRUE(c.uncarried_values.empty());
+    ASSERT_TRUE(c.validation.has_value());
+    EXPECT_TRUE(c.validation->valid) << c.validation->reason;
+
+    // A value at an object that is no stop of Δ_F(I) is left out and named.
+    auto source = std::make_shared<pddl::Import>(*s->source);
+    auto odd = source->pddl_problem->values.front();
+    odd.term.args[1].name = "t1"; // the bus
+    source->pddl_problem->values.push_back(odd);
+    s->source = source;
+    auto [t2, c2] = run(*s, plan);
+    EXPECT_EQ(c2.uncarried_values, (std::vector<std::string>{"(road-length a t1)"}));
+    EXPECT_EQ(c2.migrated->values.size(), 5U);
+
+    // Without the section the target's travel times have no values: the plan has no cost.
+    auto without = l.setting("ToTransitWithoutTimes", "../../tests/pddl/roads-p01.pddl");
+    ASSERT_TRUE(without.has_value()) << l.sink.render();
+    auto [t3, c3] = run(*without, plan);
+    ASSERT_TRUE(c3.target_cost.has_value());
+    EXPECT_NE(c3.target_cost->undefined, "");
+    EXPECT_FALSE(c3.validation->valid);
+}
+
 } // namespace
 } // namespace catplan::pddl_transfer

@@ -816,9 +816,12 @@ std::optional<PlanCosts> plan_costs(const TransferResult& t, const plan::Problem
         return std::nullopt;
     }
     plan::Problem target = target_problem(t);
-    CATPLAN_ASSERT(target.step_cost != nullptr, "generated actions cost what the source's do");
-    return PlanCosts{plan::plan_cost(problem, plan.steps),
-                     plan::plan_cost(target, target_plan(t.steps))};
+    auto steps = target_plan(t.steps);
+    // No generated action says a cost when only rules without one migrated: each costs 1.
+    Result<std::int64_t> target_cost = target.step_cost
+                                           ? plan::plan_cost(target, steps)
+                                           : Result<std::int64_t>(std::int64_t(steps.size()));
+    return PlanCosts{plan::plan_cost(problem, plan.steps), std::move(target_cost)};
 }
 
 Replan replan(const TransferResult& t, const plan::SearchOptions& options) {
