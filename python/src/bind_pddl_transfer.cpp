@@ -223,6 +223,10 @@ problem found.)doc")
             "The target plan's cost when the target actions have costs and their values are "
             "known (else None).")
         .def_property_readonly(
+            "uncarried_values", [](const PyPddlTransfer& r) { return r.checks.uncarried_values; },
+            "Source values the map's functions section names that Δ_F(I) could not take, as "
+            "'(road-length a t1)'.")
+        .def_property_readonly(
             "pddl_valid",
             [](const PyPddlTransfer& r) -> std::optional<bool> {
                 if (!r.checks.validation) {

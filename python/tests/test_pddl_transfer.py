@@ -55,3 +55,15 @@ def test_bad_plans_and_maps_raise_located_errors(blocks, source_dir):
         catplan.transfer_pddl(blocks, "NoSuchMap", str(d / "p01-3.pddl"), "")
     with pytest.raises(catplan.CatplanError, match="cannot read"):
         catplan.transfer_pddl(blocks, "ThreeToFour", str(d / "missing.pddl"), "")
+
+
+def test_the_functions_section_carries_the_costs(source_dir):
+    d = source_dir / "tests/pddl"
+    m = catplan.load(str(d / "roads_to_transit.cp"))
+    plan = (d / "roads-p01.plan").read_text()
+    r = catplan.transfer_pddl(m, "ToTransit", str(d / "roads-p01.pddl"), plan)
+    assert r.valid and r.pddl_valid and (r.source_cost, r.target_cost) == (12, 12)
+    assert r.uncarried_values == [] and "(= (travel-time a b) 3)" in r.problem_text
+    # Without the section the travel times have no values: no cost, and the validator says no.
+    w = catplan.transfer_pddl(m, "ToTransitWithoutTimes", str(d / "roads-p01.pddl"), plan)
+    assert w.target_cost is None and w.pddl_valid is False
