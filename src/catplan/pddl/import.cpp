@@ -405,22 +405,6 @@ std::vector<TypedName> mentioned(const Domain& d, const Problem& p,
     return out;
 }
 
-/// The values the problem gives the functions the actions' costs read (total-cost's left out).
-std::vector<plan::FunctionValue> function_values(const Problem& problem) {
-    std::vector<plan::FunctionValue> out;
-    for (const auto& v : problem.values) {
-        if (v.term.predicate == "total-cost") {
-            continue; // what the plan has cost so far, 0 at the start
-        }
-        plan::FunctionValue f{v.term.predicate, {}, v.value, v.range};
-        for (const auto& t : v.term.args) {
-            f.args.push_back(t.name);
-        }
-        out.push_back(std::move(f));
-    }
-    return out;
-}
-
 /// im with the problem's states (on im's domain): the goal of its positive literals, and one
 /// goal condition per negative literal (the goal with that fact, which must not extend).
 void add_problem(Import& im, const Problem& problem) {
@@ -465,6 +449,21 @@ void add_problem(Import& im, const Problem& problem) {
 }
 
 } // namespace
+
+std::vector<plan::FunctionValue> function_values(const Problem& problem) {
+    std::vector<plan::FunctionValue> out;
+    for (const auto& v : problem.values) {
+        if (v.term.predicate == "total-cost") {
+            continue; // what the plan has cost so far, 0 at the start
+        }
+        plan::FunctionValue f{v.term.predicate, {}, v.value, v.range};
+        for (const auto& t : v.term.args) {
+            f.args.push_back(t.name);
+        }
+        out.push_back(std::move(f));
+    }
+    return out;
+}
 
 const ActionVariants* Import::find_action(std::string_view name) const {
     for (const auto& a : actions) {

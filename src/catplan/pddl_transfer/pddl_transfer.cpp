@@ -59,6 +59,7 @@ bool add_target_problem(std::uint32_t file, const SourceManager& sources, Settin
     }
     s.target_goal = user->problem->goal;
     s.target_goal_conditions = user->problem->goal_conditions;
+    s.target_values = user->problem->values;
     return true;
 }
 
@@ -106,6 +107,9 @@ std::vector<pddl::FunctionValue> carried_values(const Setting& s, const pddl::Pr
     const pddl::Domain& target = s.target->pddl_domain;
     auto types = object_types(target, migrated);
     std::vector<pddl::FunctionValue> out;
+    if (s.functions.empty()) {
+        return out;
+    }
     for (const auto& c : s.functions) {
         const pddl::Function* g = target.find_function(c.target);
         CATPLAN_ASSERT(g != nullptr, "the map's functions section names the target's functions");
@@ -172,6 +176,15 @@ std::optional<Setting> load_setting(const lang::Module& m, const lang::Declarati
     if (target_problem_file && !add_target_problem(*target_problem_file, sources, s, sink)) {
         return std::nullopt;
     }
+    if (s.target != nullptr && !s.target_problem && !s.functions.empty()) {
+        // Δ_F(I)'s objects, typed, take the values the functions section carries.
+        acset::ACSet y0 = migrate::migrate(*s.map, *s.source->problem->initial);
+        auto objects = pddl::problem_of(*s.target, "", y0, acset::ACSet(s.map->target()), {});
+        s.carried_values = carried_values(s, objects, s.uncarried_values);
+        pddl::Problem values;
+        values.values = s.carried_values;
+        s.target_values = pddl::function_values(values);
+    }
     return s;
 }
 
@@ -200,6 +213,7 @@ transfer::TransferOptions transfer_options(const Setting& s) {
         o.goal_name = s.target_problem->name;
     }
     o.target_actions = s.actions;
+    o.target_values = s.target_values;
     return o;
 }
 
@@ -238,7 +252,8 @@ Checks check(const Setting& s, const pddl::IpcPlan& plan, const transfer::Transf
     c.migrated = pddl::problem_of(*s.target, s.source->pddl_problem->name, *t.target_initial,
                                   *t.target_goal, t.target_goal_conditions);
     if (!s.target_problem) {
-        c.migrated->values = carried_values(s, *c.migrated, c.uncarried_values);
+        c.migrated->values = s.carried_values;
+        c.uncarried_values = s.uncarried_values;
     } else {
         // The target's function values (an action's cost) are the user's problem's.
         c.migrated->values = s.target_problem->values;

@@ -36,6 +36,15 @@ struct Setting {
     std::vector<rewrite::ApplicationCondition> target_goal_conditions;
     /// The map's functions section: (target function, source function) pairs.
     std::vector<lang::FunctionCorrespondence> functions;
+    /// Without a target problem, the source values the functions section carries to the target's
+    /// functions (carried_values in the .cpp), and those Δ_F(I) could not take: an argument that
+    /// is no object of Δ_F(I) of the target function's type (`(road-length a t1)`).
+    std::vector<pddl::FunctionValue> carried_values;
+    std::vector<std::string> uncarried_values;
+    /// The target problem's function values where they are known (the user's target problem's,
+    /// or the carried ones), as the target's rules' costs read them: repairs take no step
+    /// without a cost.
+    std::optional<std::vector<plan::FunctionValue>> target_values;
 };
 
 /// The PDDL import of a domain the module declares on this schema, or nullptr.
@@ -88,8 +97,7 @@ struct Checks {
     /// user's target problem's, else the source problem's carried along the map's functions
     /// section (carried_values).
     std::optional<pddl::Problem> migrated;
-    /// Source values the functions section names that Δ_F(I) could not take: an argument that is
-    /// no object of Δ_F(I) of the target function's type (`(road-length a e)`).
+    /// Setting::uncarried_values, when Δ_F(I) takes the carried values.
     std::vector<std::string> uncarried_values;
     /// The target plan's cost, when the target domain's actions have costs.
     std::optional<pddl::PlanCost> target_cost;

@@ -167,16 +167,6 @@ TEST(PddlTransfer, TheFunctionsSectionCarriesTheSourceValuesToTheTargetFunctions
     ASSERT_TRUE(c.validation.has_value());
     EXPECT_TRUE(c.validation->valid) << c.validation->reason;
 
-    // A value at an object that is no stop of Δ_F(I) is left out and named.
-    auto source = std::make_shared<pddl::Import>(*s->source);
-    auto odd = source->pddl_problem->values.front();
-    odd.term.args[1].name = "t1"; // the bus
-    source->pddl_problem->values.push_back(odd);
-    s->source = source;
-    auto [t2, c2] = run(*s, plan);
-    EXPECT_EQ(c2.uncarried_values, (std::vector<std::string>{"(road-length a t1)"}));
-    EXPECT_EQ(c2.migrated->values.size(), 5U);
-
     // Without the section the target's travel times have no values: the plan has no cost.
     auto without = l.setting("ToTransitWithoutTimes", "../../tests/pddl/roads-p01.pddl");
     ASSERT_TRUE(without.has_value()) << l.sink.render();
@@ -184,6 +174,34 @@ TEST(PddlTransfer, TheFunctionsSectionCarriesTheSourceValuesToTheTargetFunctions
     ASSERT_TRUE(c3.target_cost.has_value());
     EXPECT_NE(c3.target_cost->undefined, "");
     EXPECT_FALSE(c3.validation->valid);
+}
+
+TEST(PddlTransfer, RepairsTakeNoStepWithoutACostWhereTheTargetsValuesAreKnown) {
+    Loaded l("../../tests/pddl/roads_to_transit.cp");
+    auto s = l.setting("ToHops", "../../tests/pddl/roads-p01.pddl");
+    ASSERT_TRUE(s.has_value()) << l.sink.render();
+    ASSERT_TRUE(s->target_values.has_value());
+    auto plan = l.plan(*s, "../../tests/pddl/roads-p01.plan");
+    auto [t, c] = run(*s, plan);
+    ASSERT_TRUE(t.verdict.valid()) << t.verdict.reason();
+    std::vector<std::string> actions;
+    for (const auto& st : c.target_plan.value_or(pddl::IpcPlan{})) {
+        actions.push_back(st.action);
+    }
+    // Each drive is a departure and an arrival; a shuttle's fare has no value.
+    EXPECT_EQ(actions, (std::vector<std::string>{"depart", "arrive", "depart", "arrive", "depart",
+                                                 "arrive"}));
+    ASSERT_TRUE(c.target_cost.has_value());
+    EXPECT_EQ(c.target_cost->total, 12);
+    ASSERT_TRUE(c.validation.has_value());
+    EXPECT_TRUE(c.validation->valid) << c.validation->reason;
+
+    // Repairs that read no costs take the shuttle, which the target problem cannot price.
+    s->target_values.reset();
+    auto [t2, c2] = run(*s, plan);
+    ASSERT_TRUE(t2.verdict.valid()) << t2.verdict.reason();
+    ASSERT_TRUE(c2.validation.has_value());
+    EXPECT_FALSE(c2.validation->valid);
 }
 
 } // namespace

@@ -5,6 +5,7 @@
 #include "catplan/rewrite/dpo.hpp"
 #include "catplan/transfer/focus.hpp"
 
+#include <algorithm>
 #include <fmt/format.h>
 
 namespace catplan::transfer {
@@ -89,8 +90,25 @@ bool binds_initial_parts(const plan::Domain& target, const ACSet& initial,
 
 } // namespace
 
-Repairer::Repairer(plan::DomainPtr target, RepairOptions options)
-    : target_(std::move(target)), options_(std::move(options)) {}
+Repairer::Repairer(plan::DomainPtr target, RepairOptions options, StepCost step_cost)
+    : target_(std::move(target)), step_cost_(std::move(step_cost)), options_(std::move(options)) {}
+
+plan::ProblemPtr Repairer::problem(ACSet initial, ACSet goal) const {
+    auto p = std::make_shared<plan::Problem>();
+    p->name = "repair";
+    p->domain = target_;
+    p->initial = std::make_shared<const ACSet>(std::move(initial));
+    p->goal = std::make_shared<const ACSet>(std::move(goal));
+    p->step_cost = step_cost_;
+    return p;
+}
+
+bool Repairer::costed(const std::vector<plan::Step>& steps) const {
+    return !step_cost_ || std::all_of(steps.begin(), steps.end(), [&](const plan::Step& s) {
+        const auto* rule = target_->find_rule(s.action);
+        return rule != nullptr && step_cost_(*rule, s.args).has_value();
+    });
+}
 
 NamedState& Repairer::scratch_copy(const NamedState& y) {
     if (scratch_) {
@@ -158,6 +176,9 @@ bool Repairer::use_memo(const Request& q, const RepairMemo& memo, const RepairSh
         return false;
     }
     auto steps = RepairMemo::renamed(*e, shape);
+    if (!costed(steps)) {
+        return false; // a step whose cost the target problem gives here no value
+    }
     auto replayed = replay(*target_, scratch_copy(q.y), steps, q.subgoal, true, q.name);
     if (!replayed) {
         return false; // something outside the focus differs
@@ -185,11 +206,7 @@ bool Repairer::focus_repair(const Request& q, const Focus& focus, Repair& out) {
             continue;
         }
         searched = fp.parts;
-        auto p = std::make_shared<plan::Problem>();
-        p->name = "repair";
-        p->domain = target_;
-        p->initial = std::make_shared<const ACSet>(std::move(fp.initial));
-        p->goal = std::make_shared<const ACSet>(std::move(fp.goal));
+        auto p = problem(std::move(fp.initial), std::move(fp.goal));
         auto shape = repair_shape(*p->initial, *p->goal);
         bool searched_before = false;
         if (shape && use_memo(q, memo_, *shape, out, searched_before)) {
@@ -212,7 +229,7 @@ bool Repairer::focus_repair(const Request& q, const Focus& focus, Repair& out) {
         auto r = search_by_names(p, options);
         add_stats(out.stats, r.stats);
         if (r.status != plan::SearchStatus::Solved ||
-            !binds_initial_parts(*target_, *p->initial, r.plan->steps)) {
+            !binds_initial_parts(*target_, *p->initial, r.plan->steps) || !costed(r.plan->steps)) {
             if (shape && r.status != plan::SearchStatus::TimeLimit &&
                 r.status != plan::SearchStatus::MemoryLimit) {
                 memo_.remember_failure(*shape, q.step);
@@ -239,17 +256,13 @@ bool Repairer::focus_repair(const Request& q, const Focus& focus, Repair& out) {
 // The whole state: the target's ground task compiled once per transfer and searched from each
 // state (plan/ground/reuse.hpp), else a search of the repair's own problem.
 void Repairer::whole_repair(const Request& q, Repair& out) {
-    auto initial = std::make_shared<const ACSet>(q.y.state());
-    auto goal = std::make_shared<const ACSet>(q.subgoal);
+    auto whole = problem(q.y.state(), q.subgoal);
+    const auto& initial = whole->initial;
+    const auto& goal = whole->goal;
     plan::SearchResult r;
     bool searched = false;
     if (options_.search.ground && !task_ && why_no_task_.empty()) {
-        auto p = std::make_shared<plan::Problem>();
-        p->name = "repair";
-        p->domain = target_;
-        p->initial = initial;
-        p->goal = goal;
-        auto task = plan::ground::ReusableTask::compile(p, options_.search);
+        auto task = plan::ground::ReusableTask::compile(whole, options_.search);
         if (task) {
             task_.emplace(std::move(*task));
         } else {
@@ -265,12 +278,7 @@ void Repairer::whole_repair(const Request& q, Repair& out) {
         }
     }
     if (!searched) {
-        plan::Problem p;
-        p.name = "repair";
-        p.domain = target_;
-        p.initial = initial;
-        p.goal = goal;
-        r = plan::find_plan(p, options_.search);
+        r = plan::find_plan(*whole, options_.search);
     }
     add_stats(out.stats, r.stats);
     if (r.status != plan::SearchStatus::Solved) {
@@ -278,6 +286,11 @@ void Repairer::whole_repair(const Request& q, Repair& out) {
                       ? std::string("no target plan reaches the migrated source state")
                       : fmt::format("the local search stopped at its {} ({} states expanded)",
                                     plan::to_string(r.status), out.stats.expanded);
+        return;
+    }
+    if (!costed(r.plan->steps)) {
+        out.why = "the plan found takes a step whose cost the target problem gives no value (the "
+                  "C-set search reads no costs)";
         return;
     }
     auto replayed = replay(*target_, scratch_copy(q.y), r.plan->steps, q.subgoal, false, q.name);

@@ -83,10 +83,16 @@ struct Repair {
 /// in (which must not have that name yet).
 using CreatedName = std::function<std::string(NamedState&, ObId)>;
 
+/// What a step of a rule with these arguments costs, or nullopt when it has none
+/// (plan::Problem::step_cost).
+using StepCost = decltype(plan::Problem::step_cost);
+
 /// Repairs steps of one transfer into one target domain.
 class Repairer {
 public:
-    Repairer(plan::DomainPtr target, RepairOptions options);
+    /// With step_cost (the target problem's costs, where they are known), a repair takes no step
+    /// without a cost, as a planner that reads the target problem would not.
+    Repairer(plan::DomainPtr target, RepairOptions options, StepCost step_cost = {});
 
     /// A plan in the target domain from y to a state into which subgoal embeds monically, for
     /// source step `step` (a later repair of the same shape names it as the one it reuses), and
@@ -116,8 +122,14 @@ private:
     void whole_repair(const Request& q, Repair& out);
     plan::SearchResult search_by_names(const plan::ProblemPtr& p,
                                        const plan::SearchOptions& options) const;
+    // A repair problem on the target domain from initial to goal, with the target's costs.
+    plan::ProblemPtr problem(acset::ACSet initial, acset::ACSet goal) const;
+    // Whether every step has a cost (always, without step_cost): a plan remembered from another
+    // focus, or found by a search that reads no costs, may take one without.
+    bool costed(const std::vector<plan::Step>& steps) const;
 
     plan::DomainPtr target_;
+    StepCost step_cost_;
     RepairOptions options_;
     /// The target's ground task, compiled at the first repair on the whole state.
     std::optional<plan::ground::ReusableTask> task_;

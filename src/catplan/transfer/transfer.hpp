@@ -111,6 +111,10 @@ struct TransferOptions {
     /// action its generated action corresponds to, else repaired (repair.hpp). Null to carry
     /// out the generated actions.
     std::shared_ptr<const TargetActions> target_actions;
+    /// The target problem's function values, which the costs of the target's own actions read,
+    /// where they are known: a repair then takes no step without a cost. Unset: repairs read no
+    /// costs.
+    std::optional<std::vector<plan::FunctionValue>> target_values;
     RepairOptions repair;
 };
 
