@@ -19,6 +19,8 @@ struct PyPddlStep {
     std::optional<std::string> action;
     std::optional<std::size_t> repair_reused_from;
     std::size_t expanded = 0;
+    std::optional<std::int64_t> repair_cost;
+    bool repair_least_cost = false;
 };
 
 /// What transfer_pddl returns.
@@ -125,6 +127,8 @@ std::vector<PyPddlStep> pddl_steps(const PyPddlTransfer& r) {
         }
         p.repair_reused_from = s.repair_reused_from;
         p.expanded = s.repair_stats.expanded;
+        p.repair_cost = s.repair_cost;
+        p.repair_least_cost = s.repair_least_cost;
         out.push_back(std::move(p));
     }
     return out;
@@ -169,6 +173,11 @@ void bind_step(py::module_& m) {
                       "The earlier step (0-based) whose repair was renamed for this one, or None.")
         .def_readonly("expanded", &PyPddlStep::expanded,
                       "States the repair's search expanded (0 when none ran).")
+        .def_readonly("repair_cost", &PyPddlStep::repair_cost,
+                      "What the repair's steps cost where the target's costs are known, or None.")
+        .def_readonly("repair_least_cost", &PyPddlStep::repair_least_cost,
+                      "Whether no plan of the focus (or state) the repair searched costs less: "
+                      "its search summed the target's costs with A* and LM-cut.")
         .def("__repr__", [](const PyPddlStep& s) {
             std::string source = py::repr(s.source);
             return "<PddlTransferStep " + source + " " + s.kind + ": " +
@@ -223,7 +232,7 @@ problem found.)doc")
             "The target plan's cost when the target actions have costs and their values are "
             "known (else None).")
         .def_property_readonly(
-            "uncarried_values", [](const PyPddlTransfer& r) { return r.checks.uncarried_values; },
+            "uncarried_values", [](const PyPddlTransfer& r) { return r.setting->uncarried_values; },
             "Source values the map's functions section names that Δ_F(I) could not take, as "
             "'(road-length a t1)'.")
         .def_property_readonly(

@@ -67,3 +67,18 @@ def test_the_functions_section_carries_the_costs(source_dir):
     # Without the section the travel times have no values: no cost, and the validator says no.
     w = catplan.transfer_pddl(m, "ToTransitWithoutTimes", str(d / "roads-p01.pddl"), plan)
     assert w.target_cost is None and w.pddl_valid is False
+    # A fare is per bus and stop: no road length is one, and each left out is named.
+    f = catplan.transfer_pddl(m, "ToFares", str(d / "roads-p01.pddl"), plan)
+    assert f.target_cost is None and len(f.uncarried_values) == 5
+    assert f.uncarried_values[0] == "(road-length a d)"
+
+
+def test_repairs_sum_the_targets_costs(source_dir):
+    d = source_dir / "tests/pddl"
+    m = catplan.load(str(d / "roads_to_transit.cp"))
+    plan = (d / "roads-p01.plan").read_text()
+    r = catplan.transfer_pddl(m, "ToCharters", str(d / "roads-p01.pddl"), plan)
+    # A departure and an arrival for the road's length, never a charter for 50.
+    assert r.valid and r.pddl_valid and r.target_cost == 12
+    assert [s.repair_cost for s in r.steps] == [3, 4, 5]
+    assert all(s.repair_least_cost for s in r.steps)

@@ -67,6 +67,25 @@ nlohmann::ordered_json conditions_json(const std::vector<rewrite::ApplicationCon
     return out;
 }
 
+// A map's actions and functions sections (between PDDL domains), as written: each action
+// `source ⇒ target`, each function `target ⇒ source`.
+std::string map_sections_text(const lang::Declaration& d) {
+    std::string out;
+    if (!d.actions.empty()) {
+        out += "  actions (source action ⇒ target action):\n";
+        for (const auto& c : d.actions) {
+            out += fmt::format("    {} ⇒ {}\n", c.source, c.target);
+        }
+    }
+    if (!d.functions.empty()) {
+        out += "  functions (target function ⇒ source function):\n";
+        for (const auto& c : d.functions) {
+            out += fmt::format("    {} ⇒ {}\n", c.target, c.source);
+        }
+    }
+    return out;
+}
+
 // The declaration as JSON: its kind, name and summary, and what it holds (docs/json-output.md).
 nlohmann::ordered_json show_json(const lang::Declaration& d) {
     nlohmann::ordered_json j = declaration_json(d);
@@ -105,6 +124,14 @@ nlohmann::ordered_json show_json(const lang::Declaration& d) {
         for (const auto& line : migrate::describe_map(*d.map)) {
             j["entries"].push_back({{"name", line.name}, {"image", line.image}});
         }
+        j["actions"] = nlohmann::ordered_json::array();
+        for (const auto& c : d.actions) {
+            j["actions"].push_back({{"source", c.source}, {"target", c.target}});
+        }
+        j["functions"] = nlohmann::ordered_json::array();
+        for (const auto& c : d.functions) {
+            j["functions"].push_back({{"target", c.target}, {"source", c.source}});
+        }
         break;
     }
     return j;
@@ -123,7 +150,8 @@ int cmd_show(const std::string& file, const std::string& name, bool json, std::o
     } else if (d->kind == lang::DeclKind::Schema) {
         out << schema::describe(*d->schema);
     } else if (d->kind == lang::DeclKind::Map) {
-        out << lang::summarize(*d) << "\n" << migrate::map_text(migrate::describe_map(*d->map));
+        out << lang::summarize(*d) << "\n"
+            << migrate::map_text(migrate::describe_map(*d->map)) << map_sections_text(*d);
     } else if (d->kind == lang::DeclKind::Rule) {
         out << rule_tables(*d->rule, 0);
     } else if (d->kind == lang::DeclKind::Domain) {

@@ -121,6 +121,25 @@ bool load_ipc_plan(Session& s, TransferInputs& in, const std::string& path, std:
     return true;
 }
 
+namespace {
+
+// A repair's cost where the target's costs are known, and whether it is the least of any plan of
+// the focus (or whole state) searched: "; cost 3, the least on a focus of 5 parts".
+std::string repair_cost_text(const transfer::StepTransfer& step) {
+    if (!step.repair_cost) {
+        return "";
+    }
+    if (!step.repair_least_cost) {
+        return fmt::format("; cost {}", *step.repair_cost);
+    }
+    return fmt::format("; cost {}, the least {}", *step.repair_cost,
+                       step.repair_focus > 0
+                           ? fmt::format("on a focus of {} parts", step.repair_focus)
+                           : std::string("from the state before it"));
+}
+
+} // namespace
+
 std::string pddl_steps_text(const TransferInputs& in, const transfer::TransferResult& t) {
     const auto& pt = *in.pddl;
     const auto& st = *pt.setting;
@@ -141,11 +160,12 @@ std::string pddl_steps_text(const TransferInputs& in, const transfer::TransferRe
             break;
         case transfer::StepTransfer::Kind::Repaired:
             how = fmt::format(
-                "repaired: {} step{} ({})", step.target_steps.size(),
+                "repaired: {} step{} ({}{})", step.target_steps.size(),
                 step.target_steps.size() == 1 ? "" : "s",
                 step.repair_reused_from
                     ? fmt::format("step {}'s repair, renamed", *step.repair_reused_from + 1)
-                    : fmt::format("{} states expanded", step.repair_stats.expanded));
+                    : fmt::format("{} states expanded", step.repair_stats.expanded),
+                repair_cost_text(step));
             break;
         }
         if (step.target_steps.empty()) {
@@ -181,12 +201,13 @@ int finish_pddl_transfer(const TransferInputs& in, const TransferArgs& a,
     if (c.comparison) {
         word_comparison(*c.comparison, checks);
     }
-    if (!c.uncarried_values.empty()) {
-        checks.text += fmt::format("note: {} value(s) of the source problem the map's functions "
-                                   "section names are not carried: {} (an argument is no "
-                                   "object of Δ_F(I) of the target function's type)\n",
-                                   c.uncarried_values.size(), fmt::join(c.uncarried_values, ", "));
-        checks.json["uncarried_values"] = c.uncarried_values;
+    if (!st.target_problem && !st.uncarried_values.empty()) {
+        checks.text +=
+            fmt::format("note: {} value(s) of the source problem the map's functions "
+                        "section names are not carried: {} (an argument is no "
+                        "object of Δ_F(I) of the target function's type)\n",
+                        st.uncarried_values.size(), fmt::join(st.uncarried_values, ", "));
+        checks.json["uncarried_values"] = st.uncarried_values;
     }
     if (c.target_cost) {
         checks.text += "target plan cost: " + pddl::describe_cost(*c.target_cost) +

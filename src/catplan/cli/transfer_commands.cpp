@@ -152,7 +152,10 @@ nlohmann::ordered_json steps_json(const TransferInputs& in, const transfer::Tran
                 {"focus_parts", st.repair_focus},
                 {"reused_from", st.repair_reused_from
                                     ? nlohmann::ordered_json(*st.repair_reused_from + 1)
-                                    : nlohmann::ordered_json(nullptr)}};
+                                    : nlohmann::ordered_json(nullptr)},
+                {"cost", st.repair_cost ? nlohmann::ordered_json(*st.repair_cost)
+                                        : nlohmann::ordered_json(nullptr)},
+                {"least_cost", st.repair_least_cost}};
         }
     }
     return out;

@@ -442,7 +442,7 @@ void add_problem(Import& im, const Problem& problem) {
         p->goal_conditions.push_back(std::move(c));
     }
     p->range = problem.range;
-    p->values = function_values(problem);
+    p->values = function_values(problem.values);
     p->counts_steps = !problem.metric && im.pddl_domain.has_costs();
     plan::set_step_cost(*p);
     im.problem = p;
@@ -450,9 +450,9 @@ void add_problem(Import& im, const Problem& problem) {
 
 } // namespace
 
-std::vector<plan::FunctionValue> function_values(const Problem& problem) {
+std::vector<plan::FunctionValue> function_values(const std::vector<FunctionValue>& values) {
     std::vector<plan::FunctionValue> out;
-    for (const auto& v : problem.values) {
+    for (const auto& v : values) {
         if (v.term.predicate == "total-cost") {
             continue; // what the plan has cost so far, 0 at the start
         }

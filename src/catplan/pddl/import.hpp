@@ -118,9 +118,8 @@ std::optional<Import> import_pddl(const Domain& domain, const Problem* problem,
 std::optional<Import> import_problem(const Import& domain, const Problem& problem,
                                      DiagnosticSink& sink, const ImportOptions& options = {});
 
-/// The values the problem gives the functions the actions' costs read, as the rules' costs read
-/// them (total-cost's left out).
-std::vector<plan::FunctionValue> function_values(const Problem& problem);
+/// A problem's function values as the rules' costs read them (total-cost's left out).
+std::vector<plan::FunctionValue> function_values(const std::vector<FunctionValue>& values);
 
 /// The import's rules for an initial state given as facts: the same rules when the facts meet
 /// the import's assumptions, else rules rebuilt for them on the same schema.

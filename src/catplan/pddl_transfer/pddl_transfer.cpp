@@ -13,34 +13,6 @@
 namespace catplan::pddl_transfer {
 namespace {
 
-/// The target's own actions matched to the generated ones, with the target's rules for Δ_F(I);
-/// false with the errors in sink.
-bool add_target(const lang::Module& m, const lang::Declaration& map, Setting& s,
-                DiagnosticSink& sink) {
-    auto target = pddl_domain_on(m, s.map->target());
-    if (target == nullptr) {
-        return true; // the generated actions are the target's
-    }
-    acset::ACSet y0 = migrate::migrate(*s.map, *s.source->problem->initial);
-    auto own = pddl::for_initial_facts(*target, target->facts(y0), sink);
-    if (!own || sink.has_errors()) {
-        return false;
-    }
-    s.target = std::make_shared<const pddl::Import>(std::move(*own));
-    std::vector<std::pair<std::string, std::string>> named;
-    for (const auto& c : map.actions) {
-        named.emplace_back(c.source, c.target);
-    }
-    auto generated = transfer::migrate_domain(*s.map, *s.source->problem->domain);
-    auto source = s.source;
-    auto own_import = s.target;
-    s.actions = std::make_shared<const transfer::TargetActions>(transfer::correspond_domain(
-        *generated.domain, s.target->domain, named,
-        [own_import](std::string_view r) { return own_import->action_of(r); },
-        [source](std::string_view r) { return source->action_of(r); }));
-    return true;
-}
-
 /// The user's target problem and its goal; false with the errors in sink.
 bool add_target_problem(std::uint32_t file, const SourceManager& sources, Setting& s,
                         DiagnosticSink& sink) {
@@ -134,6 +106,41 @@ std::vector<pddl::FunctionValue> carried_values(const Setting& s, const pddl::Pr
     return out;
 }
 
+/// The target's own actions matched to the generated ones, with the target's rules for Δ_F(I),
+/// and without a user's target problem the values the functions section carries; false with the
+/// errors in sink.
+bool add_target(const lang::Module& m, const lang::Declaration& map, bool has_target_problem,
+                Setting& s, DiagnosticSink& sink) {
+    auto target = pddl_domain_on(m, s.map->target());
+    if (target == nullptr) {
+        return true; // the generated actions are the target's
+    }
+    acset::ACSet y0 = migrate::migrate(*s.map, *s.source->problem->initial);
+    auto own = pddl::for_initial_facts(*target, target->facts(y0), sink);
+    if (!own || sink.has_errors()) {
+        return false;
+    }
+    s.target = std::make_shared<const pddl::Import>(std::move(*own));
+    if (!has_target_problem && !s.functions.empty()) {
+        // Δ_F(I)'s objects, typed, take the values the functions section carries.
+        auto objects = pddl::problem_of(*s.target, "", y0, acset::ACSet(s.map->target()), {});
+        s.carried_values = carried_values(s, objects, s.uncarried_values);
+        s.target_values = pddl::function_values(s.carried_values);
+    }
+    std::vector<std::pair<std::string, std::string>> named;
+    for (const auto& c : map.actions) {
+        named.emplace_back(c.source, c.target);
+    }
+    auto generated = transfer::migrate_domain(*s.map, *s.source->problem->domain);
+    auto source = s.source;
+    auto own_import = s.target;
+    s.actions = std::make_shared<const transfer::TargetActions>(transfer::correspond_domain(
+        *generated.domain, s.target->domain, named,
+        [own_import](std::string_view r) { return own_import->action_of(r); },
+        [source](std::string_view r) { return source->action_of(r); }));
+    return true;
+}
+
 } // namespace
 
 std::shared_ptr<const pddl::Import> pddl_domain_on(const lang::Module& m,
@@ -170,20 +177,11 @@ std::optional<Setting> load_setting(const lang::Module& m, const lang::Declarati
     }
     s.source = std::make_shared<const pddl::Import>(std::move(*with_problem));
     s.functions = map.functions;
-    if (!add_target(m, map, s, sink)) {
+    if (!add_target(m, map, target_problem_file.has_value(), s, sink)) {
         return std::nullopt;
     }
     if (target_problem_file && !add_target_problem(*target_problem_file, sources, s, sink)) {
         return std::nullopt;
-    }
-    if (s.target != nullptr && !s.target_problem && !s.functions.empty()) {
-        // Δ_F(I)'s objects, typed, take the values the functions section carries.
-        acset::ACSet y0 = migrate::migrate(*s.map, *s.source->problem->initial);
-        auto objects = pddl::problem_of(*s.target, "", y0, acset::ACSet(s.map->target()), {});
-        s.carried_values = carried_values(s, objects, s.uncarried_values);
-        pddl::Problem values;
-        values.values = s.carried_values;
-        s.target_values = pddl::function_values(values);
     }
     return s;
 }
@@ -253,7 +251,6 @@ Checks check(const Setting& s, const pddl::IpcPlan& plan, const transfer::Transf
                                   *t.target_goal, t.target_goal_conditions);
     if (!s.target_problem) {
         c.migrated->values = s.carried_values;
-        c.uncarried_values = s.uncarried_values;
     } else {
         // The target's function values (an action's cost) are the user's problem's.
         c.migrated->values = s.target_problem->values;

@@ -95,10 +95,8 @@ struct Checks {
     std::optional<pddl::IpcPlan> target_plan;
     /// Δ_F(I), Δ_F(G) as a PDDL problem of the target domain. Its function values are the
     /// user's target problem's, else the source problem's carried along the map's functions
-    /// section (carried_values).
+    /// section (Setting::carried_values, those left out in Setting::uncarried_values).
     std::optional<pddl::Problem> migrated;
-    /// Setting::uncarried_values, when Δ_F(I) takes the carried values.
-    std::vector<std::string> uncarried_values;
     /// The target plan's cost, when the target domain's actions have costs.
     std::optional<pddl::PlanCost> target_cost;
     std::optional<Comparison> comparison;

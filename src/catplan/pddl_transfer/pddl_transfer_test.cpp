@@ -163,7 +163,7 @@ TEST(PddlTransfer, TheFunctionsSectionCarriesTheSourceValuesToTheTargetFunctions
     EXPECT_EQ(c.migrated->values[0].term.to_string(), "(travel-time a d)");
     EXPECT_EQ(c.migrated->values[0].value, 20);
     EXPECT_EQ(c.target_cost->total, 12);
-    EXPECT_TRUE(c.uncarried_values.empty());
+    EXPECT_TRUE(s->uncarried_values.empty());
     ASSERT_TRUE(c.validation.has_value());
     EXPECT_TRUE(c.validation->valid) << c.validation->reason;
 
@@ -174,6 +174,22 @@ TEST(PddlTransfer, TheFunctionsSectionCarriesTheSourceValuesToTheTargetFunctions
     ASSERT_TRUE(c3.target_cost.has_value());
     EXPECT_NE(c3.target_cost->undefined, "");
     EXPECT_FALSE(c3.validation->valid);
+}
+
+TEST(PddlTransfer, AValueWhoseArgumentsTheTargetFunctionCannotTakeIsLeftOutAndNamed) {
+    Loaded l("../../tests/pddl/roads_to_transit.cp");
+    // A fare is per bus and stop; a road's length is between two stops of Δ_F(I).
+    auto s = l.setting("ToFares", "../../tests/pddl/roads-p01.pddl");
+    ASSERT_TRUE(s.has_value()) << l.sink.render();
+    EXPECT_TRUE(s->carried_values.empty());
+    EXPECT_EQ(
+        s->uncarried_values,
+        (std::vector<std::string>{"(road-length a d)", "(road-length a b)", "(road-length b c)",
+                                  "(road-length c d)", "(road-length e d)"}));
+    auto [t, c] = run(*s, l.plan(*s, "../../tests/pddl/roads-p01.plan"));
+    ASSERT_TRUE(t.verdict.valid()) << t.verdict.reason();
+    ASSERT_TRUE(c.target_cost.has_value());
+    EXPECT_NE(c.target_cost->undefined.find("fare"), std::string::npos) << c.target_cost->undefined;
 }
 
 TEST(PddlTransfer, RepairsTakeNoStepWithoutACostWhereTheTargetsValuesAreKnown) {
@@ -202,6 +218,50 @@ TEST(PddlTransfer, RepairsTakeNoStepWithoutACostWhereTheTargetsValuesAreKnown) {
     ASSERT_TRUE(t2.verdict.valid()) << t2.verdict.reason();
     ASSERT_TRUE(c2.validation.has_value());
     EXPECT_FALSE(c2.validation->valid);
+}
+
+/// The target plan's actions.
+std::vector<std::string> actions_of(const Checks& c) {
+    std::vector<std::string> out;
+    for (const auto& st : c.target_plan.value_or(pddl::IpcPlan{})) {
+        out.push_back(st.action);
+    }
+    return out;
+}
+
+TEST(PddlTransfer, RepairsSumTheTargetsCostsAndTakeTheCheapestSteps) {
+    Loaded l("../../tests/pddl/roads_to_transit.cp");
+    auto s = l.setting("ToCharters", "../../tests/pddl/roads-p01.pddl");
+    ASSERT_TRUE(s.has_value()) << l.sink.render();
+    auto plan = l.plan(*s, "../../tests/pddl/roads-p01.plan");
+    auto [t, c] = run(*s, plan);
+    ASSERT_TRUE(t.verdict.valid()) << t.verdict.reason();
+    // A departure and an arrival cost the road's length (3, 4, 5); a charter costs 50.
+    EXPECT_EQ(actions_of(c), (std::vector<std::string>{"depart", "arrive", "depart", "arrive",
+                                                       "depart", "arrive"}));
+    ASSERT_EQ(t.steps.size(), 3U);
+    std::vector<std::int64_t> costs;
+    for (const auto& st : t.steps) {
+        EXPECT_EQ(st.kind, transfer::StepTransfer::Kind::Repaired);
+        EXPECT_TRUE(st.repair_least_cost);
+        costs.push_back(st.repair_cost.value_or(-1));
+    }
+    EXPECT_EQ(costs, (std::vector<std::int64_t>{3, 4, 5}));
+    ASSERT_TRUE(c.target_cost.has_value());
+    EXPECT_EQ(c.target_cost->total, 12);
+    ASSERT_TRUE(c.validation.has_value());
+    EXPECT_TRUE(c.validation->valid) << c.validation->reason;
+
+    // Repairs that count steps take the one-step charter: a valid plan that costs 150.
+    auto o = transfer_options(*s);
+    o.repair.least_cost = false;
+    auto t2 = transfer::transfer_plan(*s->map, *s->source->problem, source_plan(*s, plan), o);
+    ASSERT_TRUE(t2.verdict.valid()) << t2.verdict.reason();
+    auto c2 = check(*s, plan, t2);
+    EXPECT_EQ(actions_of(c2), (std::vector<std::string>{"charter", "charter", "charter"}));
+    ASSERT_TRUE(c2.target_cost.has_value());
+    EXPECT_EQ(c2.target_cost->total, 150);
+    EXPECT_FALSE(t2.steps[0].repair_least_cost);
 }
 
 } // namespace

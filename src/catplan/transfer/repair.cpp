@@ -1,6 +1,7 @@
 #include "catplan/transfer/repair.hpp"
 
 #include "catplan/hom/hom_search.hpp"
+#include "catplan/plan/costs.hpp"
 #include "catplan/plan/validate.hpp"
 #include "catplan/rewrite/dpo.hpp"
 #include "catplan/transfer/focus.hpp"
@@ -61,14 +62,6 @@ Result<bool> replay(const plan::Domain& target, NamedState& z, const std::vector
     return named;
 }
 
-// The repair found: its steps, and the state their replay reached.
-void take(Repair& out, std::vector<plan::Step> steps, NamedState&& reached, bool by_names) {
-    out.found = true;
-    out.steps = std::move(steps);
-    out.reached.emplace(std::move(reached));
-    out.by_names = by_names;
-}
-
 // Whether every argument of the steps names a part of `initial`: a step of a focused plan that
 // binds a part the plan created names it by its place in the focus, which the whole state does
 // not share.
@@ -91,7 +84,16 @@ bool binds_initial_parts(const plan::Domain& target, const ACSet& initial,
 } // namespace
 
 Repairer::Repairer(plan::DomainPtr target, RepairOptions options, StepCost step_cost)
-    : target_(std::move(target)), step_cost_(std::move(step_cost)), options_(std::move(options)) {}
+    : target_(std::move(target)),
+      step_cost_(std::move(step_cost)),
+      options_(std::move(options)),
+      by_cost_(step_cost_ && options_.least_cost) {
+    if (by_cost_) {
+        options_.search.search = plan::SearchKind::AStar;
+        options_.search.heuristic = plan::HeuristicKind::Default; // LM-cut: admissible
+        options_.search.anytime = false;
+    }
+}
 
 plan::ProblemPtr Repairer::problem(ACSet initial, ACSet goal) const {
     auto p = std::make_shared<plan::Problem>();
@@ -104,10 +106,33 @@ plan::ProblemPtr Repairer::problem(ACSet initial, ACSet goal) const {
 }
 
 bool Repairer::costed(const std::vector<plan::Step>& steps) const {
-    return !step_cost_ || std::all_of(steps.begin(), steps.end(), [&](const plan::Step& s) {
+    return !step_cost_ || cost(steps).has_value();
+}
+
+std::optional<std::int64_t> Repairer::cost(const std::vector<plan::Step>& steps) const {
+    if (!step_cost_) {
+        return std::nullopt;
+    }
+    std::int64_t sum = 0;
+    for (const auto& s : steps) {
         const auto* rule = target_->find_rule(s.action);
-        return rule != nullptr && step_cost_(*rule, s.args).has_value();
-    });
+        auto c = rule != nullptr ? step_cost_(*rule, s.args) : std::nullopt;
+        if (!c) {
+            return std::nullopt;
+        }
+        sum = plan::add_cost(sum, *c);
+    }
+    return sum;
+}
+
+void Repairer::take(Repair& out, std::vector<plan::Step> steps, NamedState&& reached, bool by_names,
+                    const plan::SearchResult* r) const {
+    out.found = true;
+    out.cost = cost(steps);
+    out.least_cost = by_cost_ && r != nullptr && r->costs && r->optimal;
+    out.steps = std::move(steps);
+    out.reached.emplace(std::move(reached));
+    out.by_names = by_names;
 }
 
 NamedState& Repairer::scratch_copy(const NamedState& y) {
@@ -183,7 +208,7 @@ bool Repairer::use_memo(const Request& q, const RepairMemo& memo, const RepairSh
     if (!replayed) {
         return false; // something outside the focus differs
     }
-    take(out, std::move(steps), std::move(*scratch_), *replayed);
+    take(out, std::move(steps), std::move(*scratch_), *replayed, nullptr);
     out.reused_from = e->origin;
     return true;
 }
@@ -207,7 +232,8 @@ bool Repairer::focus_repair(const Request& q, const Focus& focus, Repair& out) {
         }
         searched = fp.parts;
         auto p = problem(std::move(fp.initial), std::move(fp.goal));
-        auto shape = repair_shape(*p->initial, *p->goal);
+        // Without values a shape may cost otherwise elsewhere: no memo when costs are summed.
+        auto shape = by_cost_ ? std::nullopt : repair_shape(*p->initial, *p->goal);
         bool searched_before = false;
         if (shape && use_memo(q, memo_, *shape, out, searched_before)) {
             out.focus_parts = fp.parts;
@@ -217,7 +243,7 @@ bool Repairer::focus_repair(const Request& q, const Focus& focus, Repair& out) {
             continue; // the same search, renamed, found nothing or nothing that replays here
         }
         // The same change in another frame: its plan, if it replays here, needs no search.
-        auto change = change_shape(*p->initial, *p->goal);
+        auto change = by_cost_ ? std::nullopt : change_shape(*p->initial, *p->goal);
         bool changed_before = false;
         if (change && use_memo(q, changes_, *change, out, changed_before)) {
             if (shape) {
@@ -246,7 +272,7 @@ bool Repairer::focus_repair(const Request& q, const Focus& focus, Repair& out) {
         if (!replayed) {
             continue;
         }
-        take(out, std::move(r.plan->steps), std::move(*scratch_), *replayed);
+        take(out, std::move(r.plan->steps), std::move(*scratch_), *replayed, &r);
         out.focus_parts = fp.parts;
         return true;
     }
@@ -295,7 +321,7 @@ void Repairer::whole_repair(const Request& q, Repair& out) {
     }
     auto replayed = replay(*target_, scratch_copy(q.y), r.plan->steps, q.subgoal, false, q.name);
     CATPLAN_ASSERT(replayed, "a plan the planner validated replays on its initial state");
-    take(out, std::move(r.plan->steps), std::move(*scratch_), *replayed);
+    take(out, std::move(r.plan->steps), std::move(*scratch_), *replayed, &r);
 }
 
 } // namespace catplan::transfer

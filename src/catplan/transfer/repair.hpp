@@ -56,6 +56,11 @@ struct RepairOptions {
     /// At most this many expansions on a focus (a focus that needs more is not local, and the
     /// next one, or the whole state, is searched), within the search's own limit.
     std::uint64_t focus_max_nodes = 10000;
+    /// Where the target's costs are known (a StepCost), search each repair with A* and LM-cut,
+    /// summing them, for a least-cost repair on the focus or state searched, rather than with the
+    /// search above, which counts steps. No plan is then remembered by shape (repair_memo.hpp):
+    /// a shape holds no values, so another place of the same shape may cost otherwise.
+    bool least_cost = true;
 };
 
 /// A repair: the target steps found, or why none were.
@@ -76,6 +81,11 @@ struct Repair {
     /// The plan is that of the repair of this earlier source step, renamed: its focus had the
     /// same shape (repair_memo.hpp), so no search was needed.
     std::optional<std::size_t> reused_from;
+    /// What the steps cost, where the target's costs are known.
+    std::optional<std::int64_t> cost;
+    /// The search summed the costs with an admissible heuristic (RepairOptions::least_cost): no
+    /// plan of the focus (focus_parts), or of the whole state, reaches the subgoal for less.
+    bool least_cost = false;
     std::string why; ///< when not found: "the subgoal is unreachable", "time limit reached"
 };
 
@@ -127,10 +137,17 @@ private:
     // Whether every step has a cost (always, without step_cost): a plan remembered from another
     // focus, or found by a search that reads no costs, may take one without.
     bool costed(const std::vector<plan::Step>& steps) const;
+    // The steps' cost; nullopt without step_cost or where a step has none.
+    std::optional<std::int64_t> cost(const std::vector<plan::Step>& steps) const;
+    // The repair found: its steps (their cost), found by `r` when a search found them, and the
+    // state their replay reached.
+    void take(Repair& out, std::vector<plan::Step> steps, NamedState&& reached, bool by_names,
+              const plan::SearchResult* r) const;
 
     plan::DomainPtr target_;
     StepCost step_cost_;
     RepairOptions options_;
+    bool by_cost_; ///< step_cost_ and options_.least_cost: A*, no memo
     /// The target's ground task, compiled at the first repair on the whole state.
     std::optional<plan::ground::ReusableTask> task_;
     std::string why_no_task_; ///< why it could not be compiled (then each repair compiles its own)

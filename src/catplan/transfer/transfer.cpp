@@ -196,8 +196,8 @@ public:
             renaming_ = names_by_type(y0);
             rename_parts(y0, renaming_);
         }
-        out_.target_values = problem_.values;
-        for (auto& v : out_.target_values) {
+        out_.carried_values = problem_.values;
+        for (auto& v : out_.carried_values) {
             for (auto& a : v.args) {
                 a = renamed(renaming_, a);
             }
@@ -471,6 +471,8 @@ private:
         st.repair_stats = repair.stats;
         st.repair_focus = repair.focus_parts;
         st.repair_reused_from = repair.reused_from;
+        st.repair_cost = repair.cost;
+        st.repair_least_cost = repair.least_cost;
         return true;
     }
 
@@ -806,7 +808,7 @@ plan::Problem target_problem(const TransferResult& t) {
     p.initial = t.target_initial;
     p.goal = t.target_goal;
     p.goal_conditions = t.target_goal_conditions;
-    p.values = t.target_values;
+    p.values = t.carried_values;
     p.counts_steps = t.counts_steps;
     plan::set_step_cost(p);
     return p;

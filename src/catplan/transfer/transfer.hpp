@@ -147,6 +147,10 @@ struct StepTransfer {
     /// For a repair whose focus had the shape of an earlier one's (repair_memo.hpp): that
     /// earlier source step (0-based), whose plan, renamed, this one is.
     std::optional<std::size_t> repair_reused_from;
+    /// For a repair where the target's costs are known: what its steps cost, and whether no
+    /// plan of the focus or state it searched costs less (Repair::least_cost).
+    std::optional<std::int64_t> repair_cost;
+    bool repair_least_cost = false;
 };
 
 /// "generated", "corresponds" or "repaired".
@@ -173,7 +177,7 @@ struct TransferResult {
     /// The source problem's function values (what its rules' costs read), carried by name: a
     /// part of Y_0 is named after the part of I it comes from (renamed with rename_by_type), and
     /// a generated action's cost reads the source's functions at its migrated parameters.
-    std::vector<plan::FunctionValue> target_values;
+    std::vector<plan::FunctionValue> carried_values;
     /// Whether the source problem measures plans by steps although its rules say costs.
     bool counts_steps = false;
     /// The steps transferred (all of them, or those before the one the verdict's failed_step
@@ -195,7 +199,7 @@ TransferResult transfer_plan(const SchemaMap& f, const plan::Problem& problem,
                              const plan::Plan& plan, const TransferOptions& options = {});
 
 /// The target problem in the generated actions: Y_0, Δ_F(G) and its conditions, with the values
-/// carried (target_values), summing costs where the source problem does (plan/costs.hpp).
+/// carried (carried_values), summing costs where the source problem does (plan/costs.hpp).
 plan::Problem target_problem(const TransferResult& t);
 
 /// What a plan and its transfer cost, where the source problem sums action costs.

@@ -1,6 +1,7 @@
 # A map's actions and functions sections with every error each can have: all are reported at once.
 @import "../../../pddl/roads-domain.pddl"
 @import "../../../pddl/transit-domain.pddl"
+@import "../../../pddl/fares-domain.pddl"
 
 @migration ToTransit(transit, roads) begin
   object => object
@@ -20,6 +21,17 @@
     travel-time => distance
     total-cost => total-cost
     travel-time => 3
+  end
+end
+
+@migration ToFares(fares, roads) begin
+  object => object
+  stop => city
+  bus => truck
+  bus-at => at
+  link => road
+  functions => begin
+    stop-fee => road-length
   end
 end
 

@@ -1,0 +1,1 @@
+show tests/pddl/roads_to_transit.cp ToCharters --format json

@@ -1,0 +1,1 @@
+show examples/pddl/warehouse/hospital_to_warehouse.cp HospitalToWarehouse
