@@ -61,6 +61,23 @@ std::string node_names(const Query& q) {
     return out.empty() ? "none" : out;
 }
 
+/// `bus-at` read as the subtraction `bus - at`: the name it spells, or nullopt for another
+/// expression.
+std::optional<std::string> hyphenated(const Expr& e) {
+    if (e.kind == Expr::Kind::Name) {
+        return e.text;
+    }
+    if (!e.is_binary("-")) {
+        return std::nullopt;
+    }
+    auto left = hyphenated(e.args[0]);
+    auto right = hyphenated(e.args[1]);
+    if (!left || !right) {
+        return std::nullopt;
+    }
+    return *left + "-" + *right;
+}
+
 class MapElaborator {
 public:
     MapElaborator(const detail::MapForm& form, DiagnosticSink& sink)
@@ -125,8 +142,17 @@ private:
         }
         const Expr& lhs = st.args[0];
         if (lhs.kind != Expr::Kind::Name) {
-            error(lhs.range, fmt::format("expected a generator of '{}' before '=>', found '{}'",
-                                         t_.name(), to_string(lhs)));
+            auto joined = hyphenated(lhs);
+            auto meant = joined ? t_.find(*joined) : std::nullopt;
+            std::string hint;
+            if (meant) {
+                attempted_.insert(key(*meant)); // not reported again as unmapped
+                hint = fmt::format(" (the name '{}' is written var\"{}\" in a map whose schemas "
+                                   "are not PDDL imports)",
+                                   *joined, *joined);
+            }
+            error(lhs.range, fmt::format("expected a generator of '{}' before '=>', found '{}'{}",
+                                         t_.name(), to_string(lhs), hint));
             return std::nullopt;
         }
         auto g = t_.find(lhs.text);

@@ -1,0 +1,1 @@
+check tests/cli/bad/lang/map_hyphen.cp
