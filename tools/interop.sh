@@ -119,7 +119,9 @@ done
 # Costs carried through a transfer between PDDL domains (a map's functions section): VAL values
 # the transferred plan on the written target problem at the cost catplan reports, and FD's
 # astar(lmcut()) finds that problem's least cost.
-for c in "tests/pddl/roads_to_transit.cp|ToTransit|tests/pddl/roads-domain.pddl|tests/pddl/transit-domain.pddl|tests/pddl/roads-p01.pddl|tests/pddl/roads-p01.plan"; do
+# ToCharters: each drive repaired by an A* that sums the carried fares (not the one-step charter).
+for c in "tests/pddl/roads_to_transit.cp|ToTransit|tests/pddl/roads-domain.pddl|tests/pddl/transit-domain.pddl|tests/pddl/roads-p01.pddl|tests/pddl/roads-p01.plan" \
+    "tests/pddl/roads_to_transit.cp|ToCharters|tests/pddl/roads-domain.pddl|tests/pddl/charters-domain.pddl|tests/pddl/roads-p01.pddl|tests/pddl/roads-p01.plan"; do
     IFS='|' read -r file map source_domain target_domain problem plan <<<"$c"
     tp=$work/transfer.plan tq=$work/transfer.problem.pddl
     ours=$("$catplan" transfer "$file" --map "$map" --problem "$problem" --plan "$plan" -o "$tp" \
