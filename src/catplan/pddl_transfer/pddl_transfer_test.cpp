@@ -262,6 +262,17 @@ TEST(PddlTransfer, RepairsSumTheTargetsCostsAndTakeTheCheapestSteps) {
     ASSERT_TRUE(c2.target_cost.has_value());
     EXPECT_EQ(c2.target_cost->total, 150);
     EXPECT_FALSE(t2.steps[0].repair_least_cost);
+
+    // Where A* stops at its limit on the whole state, the greedy search still finds a repair.
+    auto o3 = transfer_options(*s);
+    o3.repair.radii.clear();
+    o3.repair.search.max_nodes = 1;
+    auto t3 = transfer::transfer_plan(*s->map, *s->source->problem, source_plan(*s, plan), o3);
+    ASSERT_TRUE(t3.verdict.valid()) << t3.verdict.reason();
+    EXPECT_EQ(actions_of(check(*s, plan, t3)),
+              (std::vector<std::string>{"charter", "charter", "charter"}));
+    EXPECT_FALSE(t3.steps[0].repair_least_cost);
+    EXPECT_EQ(t3.steps[0].repair_cost, 50);
 }
 
 } // namespace

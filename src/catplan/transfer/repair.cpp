@@ -89,6 +89,7 @@ Repairer::Repairer(plan::DomainPtr target, RepairOptions options, StepCost step_
       options_(std::move(options)),
       by_cost_(step_cost_ && options_.least_cost) {
     if (by_cost_) {
+        greedy_ = options_.search;
         options_.search.search = plan::SearchKind::AStar;
         options_.search.heuristic = plan::HeuristicKind::Default; // LM-cut: admissible
         options_.search.anytime = false;
@@ -279,15 +280,11 @@ bool Repairer::focus_repair(const Request& q, const Focus& focus, Repair& out) {
     return false;
 }
 
-// The whole state: the target's ground task compiled once per transfer and searched from each
-// state (plan/ground/reuse.hpp), else a search of the repair's own problem.
-void Repairer::whole_repair(const Request& q, Repair& out) {
-    auto whole = problem(q.y.state(), q.subgoal);
-    const auto& initial = whole->initial;
-    const auto& goal = whole->goal;
-    plan::SearchResult r;
-    bool searched = false;
-    if (options_.search.ground && !task_ && why_no_task_.empty()) {
+// One search of the whole state's problem: the target's ground task compiled at the first (within
+// the repair's limits), else the problem's own search.
+plan::SearchResult Repairer::search_whole(const plan::ProblemPtr& whole,
+                                          const plan::SearchOptions& options) {
+    if (options.ground && !task_ && why_no_task_.empty()) {
         auto task = plan::ground::ReusableTask::compile(whole, options_.search);
         if (task) {
             task_.emplace(std::move(*task));
@@ -296,17 +293,27 @@ void Repairer::whole_repair(const Request& q, Repair& out) {
         }
     }
     if (task_) {
-        auto reused = task_->search(initial, goal, options_.search);
+        auto reused = task_->search(whole->initial, whole->goal, options);
         // Unsolvable by names is not unsolvable: the repair's own problem is searched then.
         if (reused && !(reused->status == plan::SearchStatus::Unsolvable)) {
-            r = std::move(*reused);
-            searched = true;
+            return std::move(*reused);
         }
     }
-    if (!searched) {
-        r = plan::find_plan(*whole, options_.search);
-    }
+    return plan::find_plan(*whole, options);
+}
+
+// The whole state: the target's ground task compiled once per transfer and searched from each
+// state (plan/ground/reuse.hpp), else a search of the repair's own problem.
+void Repairer::whole_repair(const Request& q, Repair& out) {
+    auto whole = problem(q.y.state(), q.subgoal);
+    plan::SearchResult r = search_whole(whole, options_.search);
     add_stats(out.stats, r.stats);
+    if (greedy_ &&
+        (r.status == plan::SearchStatus::NodeLimit || r.status == plan::SearchStatus::TimeLimit)) {
+        // A* stopped where a greedy search may still find a repair, of no known least cost.
+        r = search_whole(whole, *greedy_);
+        add_stats(out.stats, r.stats);
+    }
     if (r.status != plan::SearchStatus::Solved) {
         out.why = r.status == plan::SearchStatus::Unsolvable
                       ? std::string("no target plan reaches the migrated source state")

@@ -58,8 +58,9 @@ struct RepairOptions {
     std::uint64_t focus_max_nodes = 10000;
     /// Where the target's costs are known (a StepCost), search each repair with A* and LM-cut,
     /// summing them, for a least-cost repair on the focus or state searched, rather than with the
-    /// search above, which counts steps. No plan is then remembered by shape (repair_memo.hpp):
-    /// a shape holds no values, so another place of the same shape may cost otherwise.
+    /// search above, which counts steps (and which searches the whole state again where A*
+    /// stops at a limit there). No plan is then remembered by shape (repair_memo.hpp): a shape
+    /// holds no values, so another place of the same shape may cost otherwise.
     bool least_cost = true;
 };
 
@@ -130,6 +131,8 @@ private:
     // the next (a copy assigned into a state's containers reuses their memory).
     NamedState& scratch_copy(const NamedState& y);
     void whole_repair(const Request& q, Repair& out);
+    plan::SearchResult search_whole(const plan::ProblemPtr& whole,
+                                    const plan::SearchOptions& options);
     plan::SearchResult search_by_names(const plan::ProblemPtr& p,
                                        const plan::SearchOptions& options) const;
     // A repair problem on the target domain from initial to goal, with the target's costs.
@@ -148,6 +151,9 @@ private:
     StepCost step_cost_;
     RepairOptions options_;
     bool by_cost_; ///< step_cost_ and options_.least_cost: A*, no memo
+    /// With by_cost_, the greedy search the options gave: the whole state is searched with it
+    /// where A* stops at a limit.
+    std::optional<plan::SearchOptions> greedy_;
     /// The target's ground task, compiled at the first repair on the whole state.
     std::optional<plan::ground::ReusableTask> task_;
     std::string why_no_task_; ///< why it could not be compiled (then each repair compiles its own)
