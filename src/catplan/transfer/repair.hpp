@@ -20,7 +20,7 @@
 // monic morphism either, is the whole state searched: the target's ground task is compiled once per
 // transfer and searched from each state with its subgoal (plan/ground/reuse.hpp), else the repair's
 // own problem. Each search is the planner's (greedy best-first with h_FF by default, within node
-// and time limits).
+// and time limits; A* with LM-cut, summing the target's costs, where they are known).
 
 #include "catplan/acset/acset.hpp"
 #include "catplan/hom/morphism.hpp"
