@@ -46,6 +46,15 @@ std::pair<transfer::TransferResult, Checks> run(const Setting& s, const pddl::Ip
     return {std::move(t), std::move(c)};
 }
 
+/// The target plan's actions.
+std::vector<std::string> actions_of(const Checks& c) {
+    std::vector<std::string> out;
+    for (const auto& st : c.target_plan.value_or(pddl::IpcPlan{})) {
+        out.push_back(st.action);
+    }
+    return out;
+}
+
 TEST(PddlTransfer, ThreeOperatorMovesAreRepairedIntoFourOperatorSteps) {
     Loaded l("blocks/three_to_four.cp");
     auto s = l.setting("ThreeToFour", "blocks/p01-3.pddl");
@@ -200,13 +209,9 @@ TEST(PddlTransfer, RepairsTakeNoStepWithoutACostWhereTheTargetsValuesAreKnown) {
     auto plan = l.plan(*s, "../../tests/pddl/roads-p01.plan");
     auto [t, c] = run(*s, plan);
     ASSERT_TRUE(t.verdict.valid()) << t.verdict.reason();
-    std::vector<std::string> actions;
-    for (const auto& st : c.target_plan.value_or(pddl::IpcPlan{})) {
-        actions.push_back(st.action);
-    }
     // Each drive is a departure and an arrival; a shuttle's fare has no value.
-    EXPECT_EQ(actions, (std::vector<std::string>{"depart", "arrive", "depart", "arrive", "depart",
-                                                 "arrive"}));
+    EXPECT_EQ(actions_of(c), (std::vector<std::string>{"depart", "arrive", "depart", "arrive",
+                                                       "depart", "arrive"}));
     ASSERT_TRUE(c.target_cost.has_value());
     EXPECT_EQ(c.target_cost->total, 12);
     ASSERT_TRUE(c.validation.has_value());
@@ -218,15 +223,6 @@ TEST(PddlTransfer, RepairsTakeNoStepWithoutACostWhereTheTargetsValuesAreKnown) {
     ASSERT_TRUE(t2.verdict.valid()) << t2.verdict.reason();
     ASSERT_TRUE(c2.validation.has_value());
     EXPECT_FALSE(c2.validation->valid);
-}
-
-/// The target plan's actions.
-std::vector<std::string> actions_of(const Checks& c) {
-    std::vector<std::string> out;
-    for (const auto& st : c.target_plan.value_or(pddl::IpcPlan{})) {
-        out.push_back(st.action);
-    }
-    return out;
 }
 
 TEST(PddlTransfer, RepairsSumTheTargetsCostsAndTakeTheCheapestSteps) {

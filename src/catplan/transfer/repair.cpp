@@ -83,11 +83,15 @@ bool binds_initial_parts(const plan::Domain& target, const ACSet& initial,
 
 } // namespace
 
-Repairer::Repairer(plan::DomainPtr target, RepairOptions options, StepCost step_cost)
-    : target_(std::move(target)),
-      step_cost_(std::move(step_cost)),
-      options_(std::move(options)),
-      by_cost_(step_cost_ && options_.least_cost) {
+Repairer::Repairer(plan::DomainPtr target, RepairOptions options,
+                   const std::optional<std::vector<plan::FunctionValue>>& values)
+    : target_(std::move(target)), options_(std::move(options)) {
+    costs_.domain = target_;
+    if (values) {
+        costs_.values = *values;
+        plan::set_step_cost(costs_);
+    }
+    by_cost_ = costs_.step_cost && options_.least_cost;
     if (by_cost_) {
         greedy_ = options_.search;
         options_.search.search = plan::SearchKind::AStar;
@@ -102,28 +106,20 @@ plan::ProblemPtr Repairer::problem(ACSet initial, ACSet goal) const {
     p->domain = target_;
     p->initial = std::make_shared<const ACSet>(std::move(initial));
     p->goal = std::make_shared<const ACSet>(std::move(goal));
-    p->step_cost = step_cost_;
+    p->step_cost = costs_.step_cost;
     return p;
 }
 
 bool Repairer::costed(const std::vector<plan::Step>& steps) const {
-    return !step_cost_ || cost(steps).has_value();
+    return !costs_.step_cost || cost(steps).has_value();
 }
 
 std::optional<std::int64_t> Repairer::cost(const std::vector<plan::Step>& steps) const {
-    if (!step_cost_) {
+    if (!costs_.step_cost) {
         return std::nullopt;
     }
-    std::int64_t sum = 0;
-    for (const auto& s : steps) {
-        const auto* rule = target_->find_rule(s.action);
-        auto c = rule != nullptr ? step_cost_(*rule, s.args) : std::nullopt;
-        if (!c) {
-            return std::nullopt;
-        }
-        sum = plan::add_cost(sum, *c);
-    }
-    return sum;
+    auto c = plan::plan_cost(costs_, steps);
+    return c ? std::optional(*c) : std::nullopt;
 }
 
 void Repairer::take(Repair& out, std::vector<plan::Step> steps, NamedState&& reached, bool by_names,

@@ -56,9 +56,9 @@ struct RepairOptions {
     /// At most this many expansions on a focus (a focus that needs more is not local, and the
     /// next one, or the whole state, is searched), within the search's own limit.
     std::uint64_t focus_max_nodes = 10000;
-    /// Where the target's costs are known (a StepCost), search each repair with A* and LM-cut,
-    /// summing them, for a least-cost repair on the focus or state searched, rather than with the
-    /// search above, which counts steps (and which searches the whole state again where A*
+    /// Where the target's costs are known (its function values), search each repair with A* and
+    /// LM-cut, summing them, for a least-cost repair on the focus or state searched, rather than
+    /// with the search above, which counts steps (and which searches the whole state again where A*
     /// stops at a limit there). No plan is then remembered by shape (repair_memo.hpp): a shape
     /// holds no values, so another place of the same shape may cost otherwise.
     bool least_cost = true;
@@ -94,16 +94,13 @@ struct Repair {
 /// in (which must not have that name yet).
 using CreatedName = std::function<std::string(NamedState&, ObId)>;
 
-/// What a step of a rule with these arguments costs, or nullopt when it has none
-/// (plan::Problem::step_cost).
-using StepCost = decltype(plan::Problem::step_cost);
-
 /// Repairs steps of one transfer into one target domain.
 class Repairer {
 public:
-    /// With step_cost (the target problem's costs, where they are known), a repair takes no step
+    /// With the target problem's function values, where they are known, a repair takes no step
     /// without a cost, as a planner that reads the target problem would not.
-    Repairer(plan::DomainPtr target, RepairOptions options, StepCost step_cost = {});
+    Repairer(plan::DomainPtr target, RepairOptions options,
+             const std::optional<std::vector<plan::FunctionValue>>& values = std::nullopt);
 
     /// A plan in the target domain from y to a state into which subgoal embeds monically, for
     /// source step `step` (a later repair of the same shape names it as the one it reuses), and
@@ -137,10 +134,10 @@ private:
                                        const plan::SearchOptions& options) const;
     // A repair problem on the target domain from initial to goal, with the target's costs.
     plan::ProblemPtr problem(acset::ACSet initial, acset::ACSet goal) const;
-    // Whether every step has a cost (always, without step_cost): a plan remembered from another
-    // focus, or found by a search that reads no costs, may take one without.
+    // Whether every step has a cost (always, without the target's costs): a plan remembered from
+    // another focus, or found by a search that reads no costs, may take one without.
     bool costed(const std::vector<plan::Step>& steps) const;
-    // The steps' cost; nullopt without step_cost or where a step has none.
+    // The steps' cost; nullopt without the target's costs or where a step has none.
     std::optional<std::int64_t> cost(const std::vector<plan::Step>& steps) const;
     // The repair found: its steps (their cost), found by `r` when a search found them, and the
     // state their replay reached.
@@ -148,9 +145,10 @@ private:
               const plan::SearchResult* r) const;
 
     plan::DomainPtr target_;
-    StepCost step_cost_;
+    /// The target's domain with its step costs, where its values are known (else none).
+    plan::Problem costs_;
     RepairOptions options_;
-    bool by_cost_; ///< step_cost_ and options_.least_cost: A*, no memo
+    bool by_cost_; ///< costs_.step_cost and options_.least_cost: A*, no memo
     /// With by_cost_, the greedy search the options gave: the whole state is searched with it
     /// where A* stops at a limit.
     std::optional<plan::SearchOptions> greedy_;

@@ -437,13 +437,7 @@ private:
         ACSet subgoal = migrate::migrate(f_, x_->state());
         rename_parts(subgoal, renaming_);
         if (!repairer_) {
-            plan::Problem costs; // the target problem's costs, where its values are known
-            costs.domain = own.domain;
-            if (options_.target_values) {
-                costs.values = *options_.target_values;
-                plan::set_step_cost(costs);
-            }
-            repairer_.emplace(own.domain, options_.repair, std::move(costs.step_cost));
+            repairer_.emplace(own.domain, options_.repair, options_.target_values);
         }
         auto repair = repairer_->repair(
             *y_, subgoal, i, [&](NamedState& z, ObId ob) { return created_name(z, ob, i); });
