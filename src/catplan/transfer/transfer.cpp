@@ -282,6 +282,11 @@ private:
             source_failure(i, m.error());
             return false;
         }
+        // A step whose cost has no value cannot be taken, as validate_plan (and VAL) say.
+        if (auto cost = plan::step_cost(problem_, *a->source, s.args); !cost) {
+            source_failure(i, cost.error());
+            return false;
+        }
         if (options_.target_actions) {
             return own_action_step(i, *a, std::move(*m));
         }

@@ -1,6 +1,7 @@
 #include "catplan/hom/isomorphism.hpp"
 #include "catplan/migrate/migration.hpp"
 #include "catplan/plan/costs.hpp"
+#include "catplan/plan/validate.hpp"
 #include "catplan/transfer/correspond.hpp"
 #include "catplan/transfer/rename.hpp"
 #include "catplan/transfer/transfer.hpp"
@@ -298,18 +299,22 @@ TEST(Transfer, CostsAreCarriedByNameIntoTheGeneratedActions) {
     EXPECT_EQ(target_problem(r).step_cost, nullptr);
 }
 
-TEST(Transfer, AStepWithoutAValueLeavesBothPlansWithoutACost) {
+TEST(Transfer, AStepWithoutAValueCannotBeTakenInTheSourcePlan) {
     Fixture fx;
     auto p = with_distances(fx, false);
     auto r = transfer_plan(renaming_map(fx.t, false), *p, fx.plan);
-    ASSERT_TRUE(r.verdict.valid()) << r.verdict.reason();
-    auto costs = plan_costs(r, *p, fx.plan);
-    ASSERT_TRUE(costs.has_value());
-    ASSERT_FALSE(costs->source.has_value());
-    EXPECT_EQ(costs->source.error(),
+    // As validate_plan says: the step cannot be taken, so the source plan is invalid there.
+    EXPECT_FALSE(r.verdict.source_valid());
+    auto v = plan::validate_plan(*p, fx.plan);
+    ASSERT_FALSE(v.valid);
+    EXPECT_EQ(v.reason,
               "step 2 move(B, D, A): its cost 1 + dist(D, A) has no value in the problem");
-    ASSERT_FALSE(costs->target.has_value());
-    EXPECT_EQ(costs->target.error(), costs->source.error());
+    ASSERT_EQ(r.verdict.faults.size(), 1U);
+    const Fault& f = r.verdict.faults.front();
+    EXPECT_EQ(f.kind, Fault::Kind::SourcePlan);
+    EXPECT_EQ(f.step, std::optional<std::size_t>(1));
+    EXPECT_EQ(f.where + ": " + f.why, v.reason);
+    EXPECT_FALSE(plan_costs(r, *p, fx.plan).has_value());
 }
 
 TEST(Transfer, ParametersTheMapCannotSeeAreReported) {
