@@ -271,5 +271,36 @@ TEST(PddlTransfer, RepairsSumTheTargetsCostsAndTakeTheCheapestSteps) {
     EXPECT_EQ(t3.steps[0].repair_cost, 50);
 }
 
+// The shapes that costed repairs are reused by hold the values: a repair of the 60-long road is
+// searched on its own and takes the charter, the 2-long roads' repairs are reused, and each is
+// the least. Without the values in the shape the 60-long drive would reuse depart and arrive.
+TEST(PddlTransfer, CostedRepairsAreReusedWhereTheValuesAgree) {
+    Loaded l("../../tests/pddl/roads_to_transit.cp");
+    auto s = l.setting("ToCharters", "../../tests/pddl/roads-chain.pddl");
+    ASSERT_TRUE(s.has_value()) << l.sink.render();
+    auto plan = l.plan(*s, "../../tests/pddl/roads-chain.plan");
+    auto [t, c] = run(*s, plan);
+    ASSERT_TRUE(t.verdict.valid()) << t.verdict.reason();
+    ASSERT_EQ(t.steps.size(), 7U);
+    std::vector<std::int64_t> costs;
+    std::size_t reused = 0;
+    for (const auto& st : t.steps) {
+        EXPECT_EQ(st.kind, transfer::StepTransfer::Kind::Repaired);
+        EXPECT_TRUE(st.repair_least_cost);
+        costs.push_back(st.repair_cost.value_or(-1));
+        if (st.repair_reused_from) {
+            ++reused;
+            EXPECT_EQ(t.steps[*st.repair_reused_from].repair_cost, st.repair_cost);
+        }
+    }
+    EXPECT_EQ(costs, (std::vector<std::int64_t>{2, 2, 2, 50, 2, 2, 2}));
+    EXPECT_GE(reused, 2U);
+    EXPECT_FALSE(t.steps[3].repair_reused_from.has_value());
+    ASSERT_TRUE(c.target_cost.has_value());
+    EXPECT_EQ(c.target_cost->total, 62);
+    ASSERT_TRUE(c.validation.has_value());
+    EXPECT_TRUE(c.validation->valid) << c.validation->reason;
+}
+
 } // namespace
 } // namespace catplan::pddl_transfer

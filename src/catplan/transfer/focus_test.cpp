@@ -1,3 +1,4 @@
+#include "catplan/rewrite/rule.hpp"
 #include "catplan/transfer/focus.hpp"
 #include "catplan/transfer/repair_memo.hpp"
 
@@ -292,6 +293,56 @@ TEST(RepairMemo, ShapesOfRandomMovesAreKeptByRenamingAndChangesByAddingAFrame) {
         EXPECT_EQ(fc->key, c->key) << "seed " << seed;
         EXPECT_EQ(fc->names, c->names) << "seed " << seed;
     }
+}
+
+// A domain whose one rule costs weight(its first parameter) + toll("Z", its first parameter).
+plan::Domain weighed(const Blocks& b) {
+    auto rule = std::make_shared<rewrite::Rule>(b.s);
+    rule->cost = rewrite::Cost{0, {{"weight", {{0, {}}}}, {"toll", {{-1, "Z"}, {0, {}}}}}};
+    plan::Domain d;
+    d.rules = {rule};
+    return d;
+}
+
+TEST(RepairMemo, ShapesHoldTheValuesTheStepsCanRead) {
+    Blocks b;
+    plan::Domain d = weighed(b);
+    // B from A onto C; renamed by A->D, B->C, C->A, D->B: C from D onto A.
+    ACSet i1 = b.state(4, {{0, 1}, {2}, {3}}), g1 = b.state(4, {{0}, {2, 1}, {3}});
+    ACSet i2 = b.state(4, {{3, 2}, {0}, {1}}), g2 = b.state(4, {{3}, {0, 2}, {1}});
+    std::vector<plan::FunctionValue> weights{{"weight", {"A"}, 1, {}},
+                                             {"weight", {"B"}, 2, {}},
+                                             {"weight", {"C"}, 3, {}},
+                                             {"weight", {"D"}, 4, {}}};
+    std::vector<plan::FunctionValue> renamed_weights{{"weight", {"D"}, 1, {}},
+                                                     {"weight", {"C"}, 2, {}},
+                                                     {"weight", {"A"}, 3, {}},
+                                                     {"weight", {"B"}, 4, {}}};
+    ValueIndex v(weights, d), rv(renamed_weights, d);
+    auto key = [&](const ACSet& i, const ACSet& g, const ValueIndex& values) {
+        auto shape = repair_shape(i, g, &values);
+        EXPECT_TRUE(shape);
+        return shape ? shape->key : std::vector<std::uint32_t>{};
+    };
+    // The same problem up to names, values and all.
+    EXPECT_EQ(key(i1, g1, v), key(i2, g2, rv));
+    // The same states with the values not renamed: C, the block that moves, weighs 3, not 2.
+    EXPECT_NE(key(i1, g1, v), key(i2, g2, v));
+    EXPECT_NE(key(i1, g1, v), key(i1, g1, ValueIndex({}, d)));
+    // A value of a part outside the problem is one no step here reads: left out.
+    auto outside = weights;
+    outside.push_back({"weight", {"E"}, 9, {}});
+    outside.push_back({"pair", {"A", "E"}, 9, {}});
+    EXPECT_EQ(key(i1, g1, v), key(i1, g1, ValueIndex(outside, d)));
+    // Z, which the cost reads by name wherever the step is, is held as itself.
+    auto tolls = weights, other_tolls = renamed_weights;
+    tolls.push_back({"toll", {"Z", "B"}, 5, {}});
+    other_tolls.push_back({"toll", {"Z", "C"}, 5, {}});
+    EXPECT_EQ(key(i1, g1, ValueIndex(tolls, d)), key(i2, g2, ValueIndex(other_tolls, d)));
+    EXPECT_NE(key(i1, g1, ValueIndex(tolls, d)), key(i1, g1, v));
+    auto y_tolls = other_tolls;
+    y_tolls.back().args[0] = "Y"; // no cost reads Y by name, and Y is no block here
+    EXPECT_NE(key(i1, g1, ValueIndex(tolls, d)), key(i2, g2, ValueIndex(y_tolls, d)));
 }
 
 TEST(RepairMemo, APartWithoutANameHasNoShape) {

@@ -97,6 +97,7 @@ Repairer::Repairer(plan::DomainPtr target, RepairOptions options,
         options_.search.search = plan::SearchKind::AStar;
         options_.search.heuristic = plan::HeuristicKind::Default; // LM-cut: admissible
         options_.search.anytime = false;
+        values_.emplace(costs_.values, *target_);
     }
 }
 
@@ -206,6 +207,7 @@ bool Repairer::use_memo(const Request& q, const RepairMemo& memo, const RepairSh
         return false; // something outside the focus differs
     }
     take(out, std::move(steps), std::move(*scratch_), *replayed, nullptr);
+    out.least_cost = by_cost_ && e->least_cost; // the same problem, values and all, up to names
     out.reused_from = e->origin;
     return true;
 }
@@ -229,8 +231,9 @@ bool Repairer::focus_repair(const Request& q, const Focus& focus, Repair& out) {
         }
         searched = fp.parts;
         auto p = problem(std::move(fp.initial), std::move(fp.goal));
-        // Without values a shape may cost otherwise elsewhere: no memo when costs are summed.
-        auto shape = by_cost_ ? std::nullopt : repair_shape(*p->initial, *p->goal);
+        // When costs are summed, the shape holds the values (a place of the same shape costs
+        // the same) and the change's shape is not used (its frame may cost otherwise).
+        auto shape = repair_shape(*p->initial, *p->goal, values_ ? &*values_ : nullptr);
         bool searched_before = false;
         if (shape && use_memo(q, memo_, *shape, out, searched_before)) {
             out.focus_parts = fp.parts;
@@ -260,7 +263,7 @@ bool Repairer::focus_repair(const Request& q, const Focus& focus, Repair& out) {
             continue;
         }
         if (shape) {
-            memo_.remember(*shape, r.plan->steps, q.step);
+            memo_.remember(*shape, r.plan->steps, q.step, by_cost_ && r.costs && r.optimal);
         }
         if (change) {
             changes_.remember(*change, r.plan->steps, q.step);

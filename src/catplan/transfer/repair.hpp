@@ -59,8 +59,8 @@ struct RepairOptions {
     /// Where the target's costs are known (its function values), search each repair with A* and
     /// LM-cut, summing them, for a least-cost repair on the focus or state searched, rather than
     /// with the search above, which counts steps (and which searches the whole state again where A*
-    /// stops at a limit there). No plan is then remembered by shape (repair_memo.hpp): a shape
-    /// holds no values, so another place of the same shape may cost otherwise.
+    /// stops at a limit there). The shapes plans are remembered by (repair_memo.hpp) then hold
+    /// the values their names take, and only the shape of the whole focus is used.
     bool least_cost = true;
 };
 
@@ -148,7 +148,8 @@ private:
     /// The target's domain with its step costs, where its values are known (else none).
     plan::Problem costs_;
     RepairOptions options_;
-    bool by_cost_; ///< costs_.step_cost and options_.least_cost: A*, no memo
+    bool by_cost_; ///< costs_.step_cost and options_.least_cost: A*, values in the shapes
+    std::optional<ValueIndex> values_; ///< with by_cost_, costs_.values by the names they take
     /// With by_cost_, the greedy search the options gave: the whole state is searched with it
     /// where A* stops at a limit.
     std::optional<plan::SearchOptions> greedy_;

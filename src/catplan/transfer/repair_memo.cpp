@@ -17,7 +17,17 @@ using acset::Value;
 
 // The words of an item's code: what it is, then per hom of a fact whether it is set, per
 // attribute whether its value is a name (its number is then an argument) or which value.
-enum Word : std::uint32_t { kPart, kHom, kAttr, kFact, kUnsetHom, kSetHom, kNameValue, kValue };
+enum Word : std::uint32_t {
+    kPart,
+    kHom,
+    kAttr,
+    kFact,
+    kUnsetHom,
+    kSetHom,
+    kNameValue,
+    kValue,
+    kFunctionValue
+};
 
 // The things a problem says about some names: a part of a pointed object, a hom value, an
 // attribute value, a fact. An item's code says what, without the names (kinds and indices as
@@ -65,6 +75,42 @@ public:
             }
         }
         return true;
+    }
+
+    // The function values that take some of the names and that a step on the names can read:
+    // per value, its function and value as code, then per argument a name's number, or a part a
+    // cost reads by name as itself.
+    void add_values(const ValueIndex& index) {
+        std::vector<std::uint32_t> taken;
+        for (std::string_view n : names) {
+            auto of = index.of(n);
+            taken.insert(taken.end(), of.begin(), of.end());
+        }
+        std::sort(taken.begin(), taken.end());
+        taken.erase(std::unique(taken.begin(), taken.end()), taken.end());
+        for (std::uint32_t i : taken) {
+            const auto& e = index.entries()[i];
+            bool readable = std::all_of(e.args.begin(), e.args.end(), [&](const auto& a) {
+                return index.read_by_name(a) || number.contains(a);
+            });
+            if (!readable) {
+                continue; // an argument outside the focus, which no step here can take
+            }
+            auto bits = static_cast<std::uint64_t>(e.value);
+            // The second word is a side, as every code's is; values are said of neither.
+            start({kFunctionValue, 0, e.function.id(), static_cast<std::uint32_t>(bits),
+                   static_cast<std::uint32_t>(bits >> 32U)});
+            for (const auto& a : e.args) {
+                if (index.read_by_name(a)) {
+                    codes.push_back(kValue);
+                    codes.push_back(Symbol::intern(a).id());
+                } else {
+                    codes.push_back(kNameValue);
+                    arguments.push_back(number.at(a));
+                }
+            }
+            finish();
+        }
     }
 
     std::span<const std::uint32_t> code(const Item& i) const {
@@ -342,12 +388,49 @@ std::optional<Items> items_of(const ACSet& initial, const ACSet& goal) {
 
 } // namespace
 
-std::size_t RepairShape::KeyHash::operator()(const std::vector<std::uint32_t>& key) const {
-    return hash_words(key);
+std::size_t RepairShape::KeyHash::operator()(const std::vector<std::uint32_t>& words) const {
+    return hash_words(words);
 }
 
-std::optional<RepairShape> repair_shape(const ACSet& initial, const ACSet& goal) {
+ValueIndex::ValueIndex(const std::vector<plan::FunctionValue>& values, const plan::Domain& domain) {
+    for (const auto& rule : domain.rules) {
+        if (!rule->cost) {
+            continue;
+        }
+        for (const auto& term : rule->cost->terms) {
+            for (const auto& a : term.arguments) {
+                if (a.parameter < 0 && !a.constant.empty()) {
+                    by_name_read_.insert(a.constant);
+                }
+            }
+        }
+    }
+    entries_.reserve(values.size());
+    for (const auto& v : values) {
+        entries_.push_back({Symbol::intern(v.function), v.args, v.value});
+    }
+    // The keys view the entries' strings, which stay put: entries_ is not grown again.
+    for (std::uint32_t i = 0; i < entries_.size(); ++i) {
+        for (const auto& a : entries_[i].args) {
+            auto& list = by_name_[a];
+            if (list.empty() || list.back() != i) {
+                list.push_back(i);
+            }
+        }
+    }
+}
+
+std::span<const std::uint32_t> ValueIndex::of(std::string_view name) const {
+    auto it = by_name_.find(name);
+    return it == by_name_.end() ? std::span<const std::uint32_t>() : std::span(it->second);
+}
+
+std::optional<RepairShape> repair_shape(const ACSet& initial, const ACSet& goal,
+                                        const ValueIndex* values) {
     auto in = items_of(initial, goal);
+    if (in && values != nullptr) {
+        in->add_values(*values);
+    }
     return in ? std::optional(shape_of(*in)) : std::nullopt;
 }
 
@@ -366,9 +449,10 @@ const RepairMemo::Entry* RepairMemo::find(const RepairShape& shape) const {
 }
 
 void RepairMemo::remember(const RepairShape& shape, const std::vector<plan::Step>& steps,
-                          std::size_t origin) {
+                          std::size_t origin, bool least_cost) {
     Entry e;
     e.solved = true;
+    e.least_cost = least_cost;
     e.origin = origin;
     for (const auto& step : steps) {
         e.actions.push_back(step.action);
