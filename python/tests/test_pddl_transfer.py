@@ -82,3 +82,17 @@ def test_repairs_sum_the_targets_costs(source_dir):
     assert r.valid and r.pddl_valid and r.target_cost == 12
     assert [s.repair_cost for s in r.steps] == [3, 4, 5]
     assert all(s.repair_least_cost for s in r.steps)
+
+
+def test_least_cost_repairs_are_reused_where_the_values_agree(source_dir):
+    d = source_dir / "tests/pddl"
+    m = catplan.load(str(d / "roads_to_transit.cp"))
+    plan = (d / "roads-chain.plan").read_text()
+    r = catplan.transfer_pddl(m, "ToCharters", str(d / "roads-chain.pddl"), plan)
+    # The 60-long road takes the charter (50); the 2-long ones share a searched repair.
+    assert r.valid and r.pddl_valid and (r.source_cost, r.target_cost) == (72, 62)
+    assert [s.repair_cost for s in r.steps] == [2, 2, 2, 50, 2, 2, 2]
+    assert all(s.repair_least_cost for s in r.steps)
+    reused = [s.repair_reused_from for s in r.steps if s.repair_reused_from is not None]
+    assert len(reused) >= 2 and r.steps[3].repair_reused_from is None
+    assert all(r.steps[i].repair_cost == 2 for i in reused)
