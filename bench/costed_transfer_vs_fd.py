@@ -25,14 +25,15 @@ import os
 import pathlib
 import random
 import re
-import resource
 import statistics
 import subprocess
 import sys
-import time
 
-ROOT = pathlib.Path(__file__).resolve().parent.parent
+HERE = pathlib.Path(__file__).resolve().parent
+ROOT = HERE.parent
 PDDL = ROOT / "tests/pddl"
+sys.path.insert(0, str(HERE))
+from pddl_transfer_vs_fd import timed  # noqa: E402  (whole process, wall and CPU)
 LENGTHS = (2, 3, 5, 60)
 
 
@@ -50,17 +51,6 @@ def chain(n, seed):
                "  (:metric minimize (total-cost)))\n")
     plan = "".join(f"(drive t1 c{i} c{i + 1})\n" for i in range(n - 1))
     return problem, plan + f"; cost = {sum(lengths)} (general cost)\n"
-
-
-def timed(cmd, limit):
-    """Wall seconds, the run, and its CPU seconds (user + system, the process and its children)."""
-    before = resource.getrusage(resource.RUSAGE_CHILDREN)
-    start = time.perf_counter()
-    r = subprocess.run(cmd, capture_output=True, text=True, timeout=limit + 30)
-    wall = time.perf_counter() - start
-    after = resource.getrusage(resource.RUSAGE_CHILDREN)
-    r.cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
-    return wall, r
 
 
 def repairs(report):

@@ -59,8 +59,8 @@ struct RepairOptions {
     /// Where the target's costs are known (its function values), search each repair with A* and
     /// LM-cut, summing them, for a least-cost repair on the focus or state searched, rather than
     /// with the search above, which counts steps (and which searches the whole state again where A*
-    /// stops at a limit there). The shapes plans are remembered by (repair_memo.hpp) then hold
-    /// the values their names take, and only the shape of the whole focus is used.
+    /// stops at a limit there). Plans are then remembered by shapes that hold the function values
+    /// their steps can read (repair_memo.hpp); the shape of the change alone is not used.
     bool least_cost = true;
 };
 
