@@ -4,8 +4,8 @@
     make_seeds.py ROOT OUT [CATPLAN]
 
 writes OUT/<harness>/<sha1> for each harness (lang, json, pddl_domain, pddl_problem, ipc_plan,
-plan): the language files, JSON files, PDDL domains and problems and plans under examples/ and
-tests/. With the path of a catplan binary it also adds what catplan writes from the examples: the
+plan, transfer): the language files, JSON files, PDDL domains and problems and plans under
+examples/ and tests/ (the IPC plans seed both ipc_plan and transfer). With the path of a catplan binary it also adds what catplan writes from the examples: the
 JSON of every schema and instance (`json export`) and the PDDL of every domain and problem that
 PDDL can express (`pddl export`). Nothing is copied into the repository: the seeds follow the files.
 """
@@ -15,7 +15,7 @@ import re
 import subprocess
 import sys
 
-HARNESSES = ["lang", "json", "pddl_domain", "pddl_problem", "ipc_plan", "plan"]
+HARNESSES = ["lang", "json", "pddl_domain", "pddl_problem", "ipc_plan", "plan", "transfer"]
 
 
 def classify(path: pathlib.Path, text: str):
@@ -68,6 +68,8 @@ def main() -> int:
             harness = classify(path, text)
             if harness:
                 seeds.append((harness, path.read_bytes()))
+            if harness == "ipc_plan":
+                seeds.append(("transfer", path.read_bytes()))  # IPC plans are transferred too
     if catplan:
         seeds += [(h, t.encode("utf-8")) for h, t in catplan_outputs(catplan, root)]
     counts = dict.fromkeys(HARNESSES, 0)

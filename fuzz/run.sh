@@ -9,7 +9,7 @@ set -u
 cd "$(dirname "$0")/.."
 seconds=${1:?usage: fuzz/run.sh SECONDS [HARNESS...]}
 shift
-harnesses=${*:-lang json pddl_domain pddl_problem ipc_plan plan}
+harnesses=${*:-lang json pddl_domain pddl_problem ipc_plan plan transfer}
 build=build/fuzz
 status=0
 for h in $harnesses; do
