@@ -98,6 +98,9 @@ Renaming names_by_type(const ACSet& y) {
 }
 
 void rename_parts(ACSet& y, const Renaming& renaming) {
+    if (renaming.empty()) {
+        return; // no renaming (the transfer's default): each step's state is left as it is
+    }
     for (std::uint32_t o = 0; o < y.schema().num_obs(); ++o) {
         for (Part p = 0; p < y.num_parts(ObId(o)); ++p) {
             auto it = renaming.find(std::string(y.part_name(ObId(o), p)));
