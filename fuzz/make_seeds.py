@@ -5,9 +5,10 @@
 
 writes OUT/<harness>/<sha1> for each harness (lang, json, pddl_domain, pddl_problem, ipc_plan,
 plan, transfer): the language files, JSON files, PDDL domains and problems and plans under
-examples/ and tests/ (the IPC plans seed both ipc_plan and transfer). With the path of a catplan binary it also adds what catplan writes from the examples: the
-JSON of every schema and instance (`json export`) and the PDDL of every domain and problem that
-PDDL can express (`pddl export`). Nothing is copied into the repository: the seeds follow the files.
+examples/ and tests/ (the IPC plans seed both ipc_plan and transfer). With the path of a catplan
+binary it also adds what catplan writes from the examples: the JSON of every schema and instance
+(`json export`) and the PDDL of every domain and problem that PDDL can express (`pddl export`).
+Nothing is copied into the repository: the seeds follow the files.
 """
 import hashlib
 import pathlib
