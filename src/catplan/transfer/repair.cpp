@@ -123,11 +123,15 @@ std::optional<std::int64_t> Repairer::cost(const std::vector<plan::Step>& steps)
     return c ? std::optional(*c) : std::nullopt;
 }
 
+bool Repairer::least(const plan::SearchResult& r) const {
+    return by_cost_ && r.costs && r.optimal;
+}
+
 void Repairer::take(Repair& out, std::vector<plan::Step> steps, NamedState&& reached, bool by_names,
-                    const plan::SearchResult* r) const {
+                    bool least_cost) const {
     out.found = true;
     out.cost = cost(steps);
-    out.least_cost = by_cost_ && r != nullptr && r->costs && r->optimal;
+    out.least_cost = least_cost;
     out.steps = std::move(steps);
     out.reached.emplace(std::move(reached));
     out.by_names = by_names;
@@ -206,8 +210,8 @@ bool Repairer::use_memo(const Request& q, const RepairMemo& memo, const RepairSh
     if (!replayed) {
         return false; // something outside the focus differs
     }
-    take(out, std::move(steps), std::move(*scratch_), *replayed, nullptr);
-    out.least_cost = by_cost_ && e->least_cost; // the same problem, values and all, up to names
+    // The same problem, values and all, up to names: the least here if it was where searched.
+    take(out, std::move(steps), std::move(*scratch_), *replayed, e->least_cost);
     out.reused_from = e->origin;
     return true;
 }
@@ -263,7 +267,7 @@ bool Repairer::focus_repair(const Request& q, const Focus& focus, Repair& out) {
             continue;
         }
         if (shape) {
-            memo_.remember(*shape, r.plan->steps, q.step, by_cost_ && r.costs && r.optimal);
+            memo_.remember(*shape, r.plan->steps, q.step, least(r));
         }
         if (change) {
             changes_.remember(*change, r.plan->steps, q.step);
@@ -272,7 +276,7 @@ bool Repairer::focus_repair(const Request& q, const Focus& focus, Repair& out) {
         if (!replayed) {
             continue;
         }
-        take(out, std::move(r.plan->steps), std::move(*scratch_), *replayed, &r);
+        take(out, std::move(r.plan->steps), std::move(*scratch_), *replayed, least(r));
         out.focus_parts = fp.parts;
         return true;
     }
@@ -327,7 +331,7 @@ void Repairer::whole_repair(const Request& q, Repair& out) {
     }
     auto replayed = replay(*target_, scratch_copy(q.y), r.plan->steps, q.subgoal, false, q.name);
     CATPLAN_ASSERT(replayed, "a plan the planner validated replays on its initial state");
-    take(out, std::move(r.plan->steps), std::move(*scratch_), *replayed, &r);
+    take(out, std::move(r.plan->steps), std::move(*scratch_), *replayed, least(r));
 }
 
 } // namespace catplan::transfer

@@ -139,10 +139,12 @@ private:
     bool costed(const std::vector<plan::Step>& steps) const;
     // The steps' cost; nullopt without the target's costs or where a step has none.
     std::optional<std::int64_t> cost(const std::vector<plan::Step>& steps) const;
-    // The repair found: its steps (their cost), found by `r` when a search found them, and the
-    // state their replay reached.
+    // Whether r's plan is one of least cost: searched summing the target's costs, and optimal.
+    bool least(const plan::SearchResult& r) const;
+    // The repair found: its steps (their cost, and whether it is the least), and the state their
+    // replay reached.
     void take(Repair& out, std::vector<plan::Step> steps, NamedState&& reached, bool by_names,
-              const plan::SearchResult* r) const;
+              bool least_cost) const;
 
     plan::DomainPtr target_;
     /// The target's domain with its step costs, where its values are known (else none).
