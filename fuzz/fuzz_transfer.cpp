@@ -58,9 +58,9 @@ void transfer(const Setting& s, const std::uint8_t* data, std::size_t size) {
     catplan::fuzz::Input in(data, size, "input.plan");
     auto file = in.add();
     if (auto plan = catplan::pddl_transfer::read_plan(s, file, in.sources, in.sink)) {
-        auto t = catplan::transfer::transfer_plan(*s.map, *s.source->problem,
-                                                  catplan::pddl_transfer::source_plan(s, *plan),
-                                                  catplan::pddl_transfer::transfer_options(s));
+        auto t = catplan::transfer::transfer_plan(
+            *s.map, *s.source->problem, catplan::pddl_transfer::source_plan(s, *plan),
+            catplan::pddl_transfer::transfer_options(s, *plan));
         static_cast<void>(t.verdict.reason());
         static_cast<void>(catplan::pddl_transfer::check(s, *plan, t));
     }

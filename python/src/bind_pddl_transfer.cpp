@@ -89,7 +89,7 @@ PyPddlTransfer transfer_pddl(const PyModule& m, const std::string& map, const py
         }
         r.setting = std::make_shared<const pddl_transfer::Setting>(std::move(*setting));
         r.plan = std::move(*plan);
-        auto options = pddl_transfer::transfer_options(*r.setting);
+        auto options = pddl_transfer::transfer_options(*r.setting, r.plan);
         options.keep_states = keep_states;
         r.transfer = PyTransfer{nullptr,
                                 nullptr,

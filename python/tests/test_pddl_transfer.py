@@ -57,6 +57,17 @@ def test_bad_plans_and_maps_raise_located_errors(blocks, source_dir):
         catplan.transfer_pddl(blocks, "ThreeToFour", str(d / "missing.pddl"), "")
 
 
+def test_an_invalid_source_plan_is_worded_as_validate_words_it(blocks, source_dir):
+    d = source_dir / "examples/pddl/blocks"
+    plan = "(move-to-table a b)\n(move e f d)\n"
+    r = catplan.transfer_pddl(blocks, "ThreeToFour", str(d / "p02-3.pddl"), plan)
+    assert not r.valid and not r.transfer.verdict.source_valid
+    why = "step 2 (move e f d): precondition (clear e) does not hold"
+    assert r.transfer.reason == "the source plan is invalid: " + why
+    task = catplan.loads_pddl((d / "blocks3.pddl").read_text(), (d / "p02-3.pddl").read_text())
+    assert task.validate(plan).reason == why
+
+
 def test_the_functions_section_carries_the_costs(source_dir):
     d = source_dir / "tests/pddl"
     m = catplan.load(str(d / "roads_to_transit.cp"))

@@ -367,7 +367,8 @@ bool load_transfer_plan(Session& s, TransferInputs& in, const std::string& path,
 transfer::TransferOptions transfer_options(const TransferArgs& a, const TransferInputs& in) {
     // PDDL inputs: the target domain's own actions carry the steps out.
     transfer::TransferOptions options =
-        in.pddl ? pddl_transfer::transfer_options(*in.pddl->setting) : transfer::TransferOptions{};
+        in.pddl ? pddl_transfer::transfer_options(*in.pddl->setting, in.pddl->plan)
+                : transfer::TransferOptions{};
     options.rename_by_type = a.rename_by_type;
     // The verdict is about the goal intended in the target domain, when one is given.
     options.goal = in.target_goal;

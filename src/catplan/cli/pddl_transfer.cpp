@@ -213,10 +213,18 @@ int finish_pddl_transfer(const TransferInputs& in, const TransferArgs& a,
     if (c.target_cost) {
         checks.text += "target plan cost: " + pddl::describe_cost(*c.target_cost) +
                        (c.target_cost->undefined.empty() || st.target_problem
-                            ? "\n"
+                            ? ""
                             : " (--target-problem, or the map's functions section, gives the "
-                              "target's values)\n");
+                              "target's values)");
         checks.json["target_cost"] = cost_json(*c.target_cost);
+        // A transfer that stopped has a target plan only of the steps before it.
+        if (const auto* stop = t.verdict.failed_step(); stop != nullptr && stop->step) {
+            checks.text += fmt::format(", of the steps carried out before step {}, where the "
+                                       "transfer stopped",
+                                       *stop->step + 1);
+            checks.json["target_cost"]["stopped_at_step"] = *stop->step + 1;
+        }
+        checks.text += "\n";
     }
     word_validation(st, c, checks);
     if (!a.problem_output.empty()) {

@@ -94,6 +94,12 @@ std::vector<std::string> plan_strings(const std::vector<plan::Step>& steps) {
     return out;
 }
 
+// Source step i as the user wrote it: an IPC step with PDDL inputs, else the action's step.
+std::string source_step_text(const TransferInputs& in, std::size_t i) {
+    return in.pddl ? in.pddl->plan[i].to_string()
+                   : plan::action_step(*in.problem->domain, in.plan.steps[i]).to_string();
+}
+
 // The target steps as the actions they carry out: a generated step as the source action it is
 // Δ_F of (`stack`, not the rule `stack~2`), the others as the target's own actions.
 std::vector<plan::Step> target_steps(const TransferInputs& in, const transfer::TransferResult& t) {
@@ -198,10 +204,7 @@ std::string text_report(const TransferCommandArgs& a, const TransferInputs& in, 
                          ? "valid"
                          : "invalid: " + v.find(transfer::Fault::Kind::SourcePlan)->to_string());
     for (std::size_t i = 0; i < in.plan.steps.size(); ++i) {
-        o += fmt::format(
-            "  {}. {}\n", i + 1,
-            in.pddl ? in.pddl->plan[i].to_string()
-                    : plan::action_step(*in.problem->domain, in.plan.steps[i]).to_string());
+        o += fmt::format("  {}. {}\n", i + 1, source_step_text(in, i));
     }
     o += fmt::format("target plan ({}):\n", step_count(transfer::target_plan(t.steps).size()));
     if (in.pddl) {
@@ -224,9 +227,8 @@ std::string text_report(const TransferCommandArgs& a, const TransferInputs& in, 
         }
     }
     if (const auto* failed = v.failed_step()) {
-        o += fmt::format(
-            "  {}. {}: not transferred\n", *failed->step + 1,
-            plan::action_step(*in.problem->domain, in.plan.steps[*failed->step]).to_string());
+        o += fmt::format("  {}. {}: not transferred\n", *failed->step + 1,
+                         source_step_text(in, *failed->step));
     }
     o += construction_line(v);
     for (const auto& d : v.divergences) {

@@ -203,8 +203,19 @@ plan::Plan source_plan(const Setting& s, const pddl::IpcPlan& plan) {
     return pddl::rule_plan(*s.source, plan);
 }
 
-transfer::TransferOptions transfer_options(const Setting& s) {
+transfer::TransferOptions transfer_options(const Setting& s, const pddl::IpcPlan& plan) {
     transfer::TransferOptions o;
+    o.source_fault = [source = s.source, plan]() -> std::optional<transfer::Fault> {
+        auto v = pddl::simulate_ipc_plan(source->pddl_domain, *source->pddl_problem, plan);
+        if (v.valid) {
+            return std::nullopt;
+        }
+        // The validator words a step's reason as "step 3 (unstack e d): why".
+        auto k = v.failed_step;
+        return transfer::Fault::from_reason(
+            transfer::Fault::Kind::SourcePlan, k,
+            k ? fmt::format("step {} {}", *k + 1, plan[*k].to_string()) : "", v.reason);
+    };
     o.goal = s.target_goal;
     o.goal_conditions = s.target_goal_conditions;
     if (s.target_problem) {

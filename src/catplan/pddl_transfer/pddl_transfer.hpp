@@ -67,8 +67,10 @@ std::optional<pddl::IpcPlan> read_plan(const Setting& s, std::uint32_t file,
 /// The source plan's steps as steps of the source rules (replayed: pddl::rule_plan).
 plan::Plan source_plan(const Setting& s, const pddl::IpcPlan& plan);
 
-/// The transfer options the setting fixes: the goal judged by and the target's own actions.
-transfer::TransferOptions transfer_options(const Setting& s);
+/// The transfer options the setting fixes for the IPC source plan `plan`: the goal judged by,
+/// the target's own actions, and the source plan's faults in the words of catplan's PDDL
+/// validator (`catplan validate` on the source's PDDL files).
+transfer::TransferOptions transfer_options(const Setting& s, const pddl::IpcPlan& plan);
 
 /// A target step as a step of the target's PDDL action, or nullopt when the target is not PDDL.
 std::optional<pddl::IpcStep> ipc_step(const Setting& s, const plan::Step& step);

@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace catplan::pddl_transfer {
 namespace {
@@ -41,7 +43,7 @@ struct Loaded {
 /// The transfer of `plan` in the setting, with its PDDL checks.
 std::pair<transfer::TransferResult, Checks> run(const Setting& s, const pddl::IpcPlan& plan) {
     auto t = transfer::transfer_plan(*s.map, *s.source->problem, source_plan(s, plan),
-                                     transfer_options(s));
+                                     transfer_options(s, plan));
     auto c = check(s, plan, t);
     return {std::move(t), std::move(c)};
 }
@@ -143,6 +145,30 @@ TEST(PddlTransfer, APlanStepNoStateCouldTakeIsBadInput) {
     auto file = l.sources.add_buffer("bad.plan", "(move a b)\n(fly a)\n");
     EXPECT_FALSE(read_plan(*s, file, l.sources, l.sink).has_value());
     EXPECT_NE(l.sink.render().find("bad.plan:2:"), std::string::npos) << l.sink.render();
+}
+
+TEST(PddlTransfer, AnInvalidSourcePlanIsCalledSoInTheWordsOfThePddlValidator) {
+    Loaded l("blocks/three_to_four.cp");
+    auto s = l.setting("ThreeToFour", "blocks/p02-3.pddl");
+    ASSERT_TRUE(s.has_value()) << l.sink.render();
+    // A step that cannot be taken, and a plan that stops short of the goal: the transfer's
+    // fault is the validator's (what `catplan validate` prints), not the rules' "no match".
+    const std::vector<std::pair<std::string, std::string>> cases = {
+        {"(move-to-table a b)\n(move e f d)\n",
+         "step 2 (move e f d): precondition (clear e) does not hold"},
+        {"(move-to-table a b)\n", "goal not reached: (on c b) does not hold"},
+    };
+    for (const auto& [text, reason] : cases) {
+        auto plan = read_plan(*s, l.sources.add_buffer("p.plan", text), l.sources, l.sink);
+        ASSERT_TRUE(plan.has_value()) << l.sink.render();
+        auto [t, c] = run(*s, *plan);
+        const auto* fault = t.verdict.find(transfer::Fault::Kind::SourcePlan);
+        ASSERT_NE(fault, nullptr) << text;
+        EXPECT_EQ(fault->to_string(), reason);
+        auto v = pddl::simulate_ipc_plan(s->source->pddl_domain, *s->source->pddl_problem, *plan);
+        EXPECT_EQ(v.reason, reason);
+        EXPECT_EQ(fault->step, v.failed_step);
+    }
 }
 
 TEST(PddlTransfer, AMapFromADomainNotReadFromPddlIsRefused) {
@@ -253,7 +279,7 @@ TEST(PddlTransfer, RepairsSumTheTargetsCostsAndTakeTheCheapestSteps) {
     EXPECT_TRUE(c.validation->valid) << c.validation->reason;
 
     // Repairs that count steps take the one-step charter: a valid plan that costs 150.
-    auto o = transfer_options(*s);
+    auto o = transfer_options(*s, plan);
     o.repair.least_cost = false;
     auto t2 = transfer::transfer_plan(*s->map, *s->source->problem, source_plan(*s, plan), o);
     ASSERT_TRUE(t2.verdict.valid()) << t2.verdict.reason();
@@ -264,7 +290,7 @@ TEST(PddlTransfer, RepairsSumTheTargetsCostsAndTakeTheCheapestSteps) {
     EXPECT_FALSE(t2.steps[0].repair_least_cost);
 
     // Where A* stops at its limit on the whole state, the greedy search still finds a repair.
-    auto o3 = transfer_options(*s);
+    auto o3 = transfer_options(*s, plan);
     o3.repair.radii.clear();
     o3.repair.search.max_nodes = 1;
     auto t3 = transfer::transfer_plan(*s->map, *s->source->problem, source_plan(*s, plan), o3);

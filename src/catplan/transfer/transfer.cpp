@@ -500,7 +500,19 @@ private:
     }
 
     void source_failure(std::size_t i, const std::string& why) {
-        out_.verdict.faults.push_back({Fault::Kind::SourcePlan, i, where(i), why});
+        out_.verdict.faults.push_back(worded({Fault::Kind::SourcePlan, i, where(i), why}));
+    }
+
+    // A source-plan fault in the words of the user's own validator (TransferOptions::source_fault)
+    // where it finds the same step at fault, else as the rule steps word it.
+    Fault worded(Fault f) const {
+        if (options_.source_fault) {
+            if (auto own = options_.source_fault(); own && own->step == f.step) {
+                own->kind = Fault::Kind::SourcePlan;
+                return *own;
+            }
+        }
+        return f;
     }
 
     // The source plan's fault when the replay did not stop in the source: its goal not reached,
@@ -515,23 +527,16 @@ private:
             if (v.valid) {
                 return std::nullopt;
             }
-            Fault f{Fault::Kind::SourcePlan, v.failed_step, {}, v.reason};
-            if (v.failed_step) {
-                // validate_plan words a step's reason as "step 3 pickup(B): why".
-                f.where = where(*v.failed_step);
-                if (v.reason.rfind(f.where + ": ", 0) == 0) {
-                    f.why = v.reason.substr(f.where.size() + 2);
-                } else {
-                    f.where.clear();
-                }
-            }
-            return f;
+            // validate_plan words a step's reason as "step 3 pickup(B): why".
+            return worded(Fault::from_reason(Fault::Kind::SourcePlan, v.failed_step,
+                                             v.failed_step ? where(*v.failed_step) : "", v.reason));
         }
         auto g = plan::embed_goal(*problem_.goal, problem_.goal_conditions, x_->state());
         if (g) {
             return std::nullopt;
         }
-        return Fault{Fault::Kind::SourcePlan, std::nullopt, {}, "goal not reached: " + g.error()};
+        return worded(
+            Fault{Fault::Kind::SourcePlan, std::nullopt, {}, "goal not reached: " + g.error()});
     }
 
     const SchemaMap& f_;

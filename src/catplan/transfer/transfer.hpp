@@ -50,6 +50,7 @@
 #include "catplan/transfer/verdict.hpp"
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -115,6 +116,11 @@ struct TransferOptions {
     /// where they are known: a repair then takes no step without a cost. Unset: repairs read no
     /// costs.
     std::optional<std::vector<plan::FunctionValue>> target_values;
+    /// The source plan's first fault as the validator of the user's own files words it (for an
+    /// IPC plan, catplan's PDDL validator: "step 1 (drive t1 a e): ..."), nullopt when it finds
+    /// none. Where it names the step the replay names, the verdict takes its words, so a transfer
+    /// and `catplan validate` call a source plan invalid alike. Unset: the rule steps' words.
+    std::function<std::optional<Fault>()> source_fault;
     RepairOptions repair;
 };
 

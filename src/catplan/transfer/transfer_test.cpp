@@ -317,6 +317,46 @@ TEST(Transfer, AStepWithoutAValueCannotBeTakenInTheSourcePlan) {
     EXPECT_FALSE(plan_costs(r, *p, fx.plan).has_value());
 }
 
+TEST(Transfer, SourceFaultsTakeTheWordsOfTheUsersOwnValidator) {
+    Fixture fx;
+    plan::Plan bad;
+    bad.steps = {{"move", {"A", "C", "D"}, {}}};
+    auto own = [](std::optional<std::size_t> step) {
+        return [step]() -> std::optional<Fault> {
+            return Fault{Fault::Kind::Step, step, "step 1 (move a c d)", "(clear a) is false"};
+        };
+    };
+    // Where the validator finds the step the replay stopped at, the verdict says what it says.
+    TransferOptions o;
+    o.source_fault = own(0);
+    auto r = transfer_plan(renaming_map(fx.t, false), *fx.problem, bad, o);
+    ASSERT_FALSE(r.verdict.faults.empty());
+    const Fault& f = r.verdict.faults.front();
+    EXPECT_EQ(f.kind, Fault::Kind::SourcePlan);
+    EXPECT_EQ(f.step, std::optional<std::size_t>(0));
+    EXPECT_EQ(r.verdict.reason(),
+              "the source plan is invalid: step 1 (move a c d): (clear a) is false");
+    // Where it finds another (or none), the replay's own words stay.
+    o.source_fault = own(1);
+    auto r2 = transfer_plan(renaming_map(fx.t, false), *fx.problem, bad, o);
+    auto plain = transfer_plan(renaming_map(fx.t, false), *fx.problem, bad);
+    EXPECT_EQ(r2.verdict.reason(), plain.verdict.reason());
+    EXPECT_EQ(plain.verdict.reason().rfind("the source plan is invalid: step 1 move(A, C, D): ", 0),
+              0U)
+        << plain.verdict.reason();
+}
+
+TEST(Transfer, AFaultIsSplitWhereItsReasonNamesTheStep) {
+    auto f = Fault::from_reason(Fault::Kind::SourcePlan, 2, "step 3 (stack a b)",
+                                "step 3 (stack a b): precondition (holding a) does not hold");
+    EXPECT_EQ(f.where, "step 3 (stack a b)");
+    EXPECT_EQ(f.why, "precondition (holding a) does not hold");
+    auto g = Fault::from_reason(Fault::Kind::SourcePlan, 2, "step 3 stack(a, b)",
+                                "goal not reached: (on a b) does not hold");
+    EXPECT_EQ(g.where, "");
+    EXPECT_EQ(g.to_string(), "goal not reached: (on a b) does not hold");
+}
+
 TEST(Transfer, ParametersTheMapCannotSeeAreReported) {
     Fixture fx;
     // Only purple blocks are items here, and move's blocks have no colour in its precondition:

@@ -11,6 +11,15 @@ std::string Fault::to_string() const {
     return where.empty() ? why : where + ": " + why;
 }
 
+Fault Fault::from_reason(Kind kind, std::optional<std::size_t> step, std::string where,
+                         const std::string& reason) {
+    if (!where.empty() && reason.rfind(where + ": ", 0) == 0) {
+        std::string why = reason.substr(where.size() + 2);
+        return {kind, step, std::move(where), std::move(why)};
+    }
+    return {kind, step, {}, reason};
+}
+
 bool Claim::holds() const {
     return failing() == nullptr;
 }

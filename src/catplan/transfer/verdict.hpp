@@ -48,6 +48,11 @@ struct Fault {
 
     /// "step 3 pickup(B): why", or why alone.
     std::string to_string() const;
+
+    /// The fault a validator's reason says ("step 3 pickup(B): why", or why alone): where is
+    /// `where` when the reason starts with it, else empty with the whole reason the why.
+    static Fault from_reason(Kind kind, std::optional<std::size_t> step, std::string where,
+                             const std::string& reason);
 };
 
 /// Where the target trajectory stops being the migration of the source's: after step `step`,
