@@ -379,6 +379,16 @@ Result<bool> Writer::rule_cost_terms(const rewrite::Rule& rule, const Things& L,
     for (const auto& t : rule.cost->terms) {
         std::vector<std::string> args, types;
         for (const auto& arg : t.arguments) {
+            if (arg.parameter < 0 && !arg.constant.empty()) {
+                auto named = named_cost_argument(rule, L, t.function, arg.constant);
+                if (!named) {
+                    return fail(named.error());
+                }
+                a.constants.insert(named->first + " - " + named->second);
+                args.push_back(named->first);
+                types.push_back(named->second);
+                continue;
+            }
             std::size_t i = Things::kNoThing;
             if (arg.parameter >= 0) {
                 const auto& p = rule.parameters[static_cast<std::size_t>(arg.parameter)];
@@ -398,6 +408,40 @@ Result<bool> Writer::rule_cost_terms(const rewrite::Rule& rule, const Things& L,
             fmt::format("({}{}{})", f, args.empty() ? "" : " ", fmt::join(args, " ")));
     }
     return true;
+}
+
+Result<std::pair<std::string, std::string>> Writer::named_cost_argument(const rewrite::Rule& rule,
+                                                                        const Things& L,
+                                                                        const std::string& function,
+                                                                        const std::string& name) {
+    auto named = [&](const Thing& t) { return !t.marker && t.name == name; };
+    for (const Thing& t : L.things) {
+        if (t.pinned && named(t)) {
+            return std::pair(name, thing_type(rd, t));
+        }
+    }
+    if (problem == nullptr) {
+        return fail(fmt::format("not expressible without a problem: the cost of {} reads {} of "
+                                "{}, which no parameter names: the type of that constant is "
+                                "the problem's (export the domain with a problem)",
+                                rule.name, function, name));
+    }
+    if (!initial_things) {
+        NameSet names;
+        auto init = find_things(rd, *problem->initial, marker_shapes, names, "the initial state");
+        if (!init) {
+            return fail(init.error());
+        }
+        initial_things = std::move(*init);
+    }
+    for (const Thing& t : initial_things->things) {
+        if (named(t)) {
+            return std::pair(name, thing_type(rd, t));
+        }
+    }
+    return fail(fmt::format("not expressible: the cost of {} reads {} of {}, which is no object "
+                            "of the problem {}",
+                            rule.name, function, name, problem->name));
 }
 
 std::string Writer::write_functions() const {

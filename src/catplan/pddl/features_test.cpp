@@ -156,6 +156,39 @@ TEST(PddlCosts, FunctionCostsSurviveExport) {
     }
 }
 
+TEST(PddlCosts, ACostThatReadsADomainConstantSurvivesExportWithItsProblem) {
+    auto l = load("refuel-domain.pddl", "refuel-p01.pddl");
+    ASSERT_TRUE(l->import) << l->errors();
+    // depot's type is the problem's: the domain alone cannot declare the constant.
+    auto alone = export_domain(*l->import->domain);
+    ASSERT_FALSE(alone.has_value());
+    EXPECT_TRUE(has(alone.error(), "reads refuel of depot, which no parameter names"))
+        << alone.error();
+    auto ex = export_pddl(*l->import->domain, l->import->problem.get());
+    ASSERT_TRUE(ex.has_value()) << ex.error();
+    EXPECT_TRUE(has(ex->domain, "(:constants depot - place)")) << ex->domain;
+    EXPECT_TRUE(has(ex->domain, " depot))")) << ex->domain;
+    EXPECT_FALSE(has(ex->problem, "depot - place")) << ex->problem;
+    auto back = load_text(ex->domain, ex->problem);
+    ASSERT_TRUE(back->import) << back->errors() << ex->domain << ex->problem;
+    // The same plans cost the same on the files read back; A* finds the cheaper road on both.
+    auto plan = plan_text("(drive t1 a b)\n(drive t1 b depot)");
+    for (const auto* im : {&*l->import, &*back->import}) {
+        auto v = validate_ipc_plan(*im, plan);
+        ASSERT_TRUE(v.valid) << v.reason;
+        EXPECT_EQ(v.cost.total, 3);
+        plan::SearchOptions astar;
+        astar.search = plan::SearchKind::AStar;
+        auto r = plan::find_plan(*im->problem, astar);
+        ASSERT_TRUE(r.plan && r.costs);
+        auto ipc = to_ipc_plan(*im, *r.plan);
+        ASSERT_TRUE(ipc.has_value());
+        auto w = validate_ipc_plan(*im, *ipc);
+        ASSERT_TRUE(w.valid) << w.reason;
+        EXPECT_EQ(w.cost.total, 1);
+    }
+}
+
 TEST(PddlCosts, MalformedCostsAreBadInputAndFractionsUnsupported) {
     auto cost = [](const std::string& amount) {
         return load_text("(define (domain d) (:requirements :action-costs) (:predicates (p))\n"

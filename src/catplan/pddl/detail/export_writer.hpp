@@ -8,8 +8,10 @@
 
 #include <functional>
 #include <map>
+#include <optional>
 #include <set>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace catplan::pddl::detail {
@@ -69,6 +71,8 @@ public:
     bool creates_facts_not_sets = false;
     /// The functions the actions' costs read, by PDDL name: argument types.
     std::map<std::string, std::vector<std::string>> functions;
+    /// The things of the problem's initial state, once a cost term names one.
+    std::optional<Things> initial_things;
 
     /// `(on ?x ?y)` for fact part p of x (a marker argument left out: a MarkerFact); fails on an
     /// unset hom.
@@ -86,6 +90,12 @@ public:
     /// The rule's cost terms as PDDL function terms on its parameters (recorded in functions).
     Result<bool> rule_cost_terms(const rewrite::Rule& rule, const Things& L,
                                  const std::vector<std::string>& term, ActionText& a);
+    /// A part a cost term names (no parameter: a PDDL constant) as (name, type): pinned in L,
+    /// else an object of the problem's initial state, whose type only the problem gives.
+    Result<std::pair<std::string, std::string>> named_cost_argument(const rewrite::Rule& rule,
+                                                                    const Things& L,
+                                                                    const std::string& function,
+                                                                    const std::string& name);
     /// The `(:functions ...)` declaration: total-cost and the functions the costs read.
     std::string write_functions() const;
     /// Negative application conditions as negative preconditions.

@@ -1,0 +1,8 @@
+(define (problem refuel-p01)
+  (:domain fuel-depot)
+  (:objects a b c - place t1 - truck)
+  (:init (at t1 a) (road a b) (road b depot) (road a c) (road c depot)
+         (= (refuel b depot) 3) (= (refuel c depot) 1) (= (refuel depot depot) 0)
+         (= (total-cost) 0))
+  (:goal (at t1 depot))
+  (:metric minimize (total-cost)))
