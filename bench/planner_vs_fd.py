@@ -10,7 +10,10 @@ Writes the problems (bench/pddl/generate.py: the IPC-style series, and seeded bl
 time, and measures each process's wall time and peak resident memory (wait4's ru_maxrss). Every
 plan found is validated by `catplan validate` and by VAL; a plan either rejects is counted as a
 failure. Prints a Markdown table per series, coverage, medians and the ratios catplan / FD, and
-writes the raw rows to DIR/results.json.
+writes the raw rows to DIR/results.json. Each cell names the value each heuristic gave the initial
+state (h0; catplan's JSON statistics, FD's "Initial heuristic value for ..." lines, FD's names
+mapped to catplan's): where both planners run one heuristic, equal values say they compute it
+alike.
 
 Series:
   costs     transport problems whose drives cost the road's length (generate.COST_SIZES):
@@ -141,8 +144,13 @@ def catplan_stats(p):
     except (ValueError, KeyError):
         return {}
     return dict(expanded=st.get("expanded"), evaluated=st.get("evaluated"),
-                search_cpu=st.get("search_cpu_seconds"),
+                initial_h=st.get("initial_h") or None, search_cpu=st.get("search_cpu_seconds"),
                 setup_mb=st.get("setup_memory_bytes", 0) / 2**20)
+
+
+# Fast Downward's names of the heuristics catplan also has.
+FD_HEURISTICS = {"ff": "hff", "landmark_sum_heuristic": "lmcount", "lmcut": "lmcut",
+                 "hmax": "hmax", "add": "hadd"}
 
 
 def fd_stats(p):
@@ -156,7 +164,13 @@ def fd_stats(p):
     # The resident memory when the search began: the first line that reports the initial
     # heuristic value.
     setup = re.search(r"\[t=[0-9.e-]+s, (\d+) KB\] Initial heuristic value", log)
-    return dict(expanded=last(r"Expanded (\d+) state", int),
+    # The first search's value of each heuristic on the initial state, by catplan's names.
+    initial = {}
+    for name, value in re.findall(r"Initial heuristic value for ([^:]+): (\w+)", log):
+        name = FD_HEURISTICS.get(name, name)
+        if name not in initial:
+            initial[name] = int(value) if value.isdigit() else None
+    return dict(expanded=last(r"Expanded (\d+) state", int), initial_h=initial or None,
                 evaluated=last(r"Evaluated (\d+) state", int),
                 search_cpu=last(r"Search time: ([0-9.]+)s"),
                 search_mb=last(r"Peak memory: (\d+) KB", lambda kb: int(kb) / 1024),
@@ -251,6 +265,9 @@ def cell(row):
             return "INVALID PLAN"
         return "not solved" if row["exit"] == 0 else f"not solved (exit {row['exit']})"
     exp = f", {row['expanded']} exp." if row.get("expanded") is not None else ""
+    if row.get("initial_h"):
+        exp += ", h0 " + " ".join(f"{k} {'dead end' if v is None else v}"
+                                  for k, v in row["initial_h"].items())
     cost = f", cost {row['cost']}" if row["series"] == "costs" else ""
     return f"{row['wall']:.2f} s, {row['mb']:.0f} MB, {row['steps']} steps{cost}{exp}"
 

@@ -228,7 +228,8 @@ says why), not an exception; a plan with a syntax error raises CatplanError.)doc
         .def_readonly("stats", &PySearchResult::stats,
                       "expanded, evaluated, generated, duplicates, states, frontier, f, seconds, "
                       "setup_seconds, ground_seconds, search_seconds, variables, actions, plans, "
-                      "memory, peak_memory (resident bytes of the process).")
+                      "memory, peak_memory (resident bytes of the process), initial_h (per "
+                      "heuristic, its value on the initial state; None for a dead end).")
         .def_property_readonly("solved",
                                [](const PySearchResult& r) { return r.status == "solved"; })
         .def("__repr__", [](const PySearchResult& r) {
@@ -292,6 +293,12 @@ py::dict stats_dict(const plan::SearchStats& s) {
     d["plans"] = s.plans;
     d["memory"] = s.memory;
     d["peak_memory"] = s.peak_memory;
+    py::dict initial;
+    for (const auto& [kind, value] : s.initial_h) {
+        initial[py::str(std::string(plan::to_string(kind)))] =
+            value ? py::object(py::int_(*value)) : py::object(py::none());
+    }
+    d["initial_h"] = initial;
     return d;
 }
 

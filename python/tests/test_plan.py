@@ -72,6 +72,10 @@ def test_the_planner_finds_a_plan_that_validates(case_study):
     assert catplan.validate(problem, r.plan).valid
     astar = catplan.plan(problem, search="astar", heuristic="goalcount")
     assert len(astar.plan) == 2
+    # Each heuristic's value on the initial state, as the first search saw it: of the goal,
+    # only the On fact is missing (the colours hold); breadth-first search has none.
+    assert astar.stats["initial_h"] == {"goalcount": 1}
+    assert r.stats["initial_h"] == {}
 
 
 def test_unknown_search_names_are_value_errors(case_study):

@@ -314,6 +314,12 @@ nlohmann::ordered_json plan_json(const plan::SearchResult& r, const std::string&
                                     {"generated", st.generated}, {"duplicates", st.duplicates},
                                     {"states", st.states},       {"variables", st.variables},
                                     {"actions", st.actions},     {"plans", st.plans}};
+    nlohmann::ordered_json initial = nlohmann::ordered_json::object();
+    for (const auto& [kind, value] : st.initial_h) {
+        initial[std::string(plan::to_string(kind))] =
+            value ? nlohmann::ordered_json(*value) : nlohmann::ordered_json(nullptr);
+    }
+    stats["initial_h"] = std::move(initial);
     if (timing) {
         double search_s = st.search_seconds();
         stats["seconds"] = st.seconds;

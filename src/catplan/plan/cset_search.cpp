@@ -97,6 +97,11 @@ private:
         auto root = registry_.insert(*problem_.initial).id;
         info_.push_back({});
         info_[root].h = evaluate(root);
+        if (options_.search != SearchKind::BreadthFirst) {
+            int h = info_[root].h;
+            stats_.initial_h.push_back(
+                {options_.heuristic, h == kDeadEnd ? std::nullopt : std::optional(h)});
+        }
         if (satisfies(problem_, registry_.state(root))) {
             return finish(SearchStatus::Solved, root);
         }

@@ -56,8 +56,14 @@ double megabytes(std::size_t bytes) {
 
 std::string describe(const SearchStats& st, bool timing, std::string_view prefix) {
     std::string text =
-        fmt::format("{}expanded {}, evaluated {}, generated {}, duplicates {}, states {}\n", prefix,
+        fmt::format("{}expanded {}, evaluated {}, generated {}, duplicates {}, states {}", prefix,
                     st.expanded, st.evaluated, st.generated, st.duplicates, st.states);
+    for (std::size_t i = 0; i < st.initial_h.size(); ++i) {
+        const auto& [kind, value] = st.initial_h[i];
+        text += fmt::format("{} {} {}", i == 0 ? "; initial state:" : ",", to_string(kind),
+                            value ? std::to_string(*value) : std::string("dead end"));
+    }
+    text += '\n';
     if (timing) {
         double search = st.search_seconds();
         text += fmt::format(

@@ -55,6 +55,14 @@ std::optional<SearchKind> parse_search(std::string_view name);
 /// The name parse_search reads.
 std::string_view to_string(SearchKind kind);
 
+/// A heuristic's value on the initial state; nullopt where it finds that state a dead end.
+struct InitialValue {
+    HeuristicKind heuristic = HeuristicKind::Default;
+    std::optional<int> value;
+
+    bool operator==(const InitialValue&) const = default;
+};
+
 struct SearchStats {
     std::uint64_t expanded = 0;
     std::uint64_t evaluated = 0;  // heuristic evaluations
@@ -62,6 +70,9 @@ struct SearchStats {
     std::uint64_t duplicates = 0; // successors equal (C-set: isomorphic) to a state stored before
     std::uint64_t states = 0;     // distinct states stored
     std::uint64_t frontier = 0;   // open nodes now
+    /// The first search's heuristics on the initial state, in the order its configuration names
+    /// them (Fast Downward's "initial heuristic value"); empty for breadth-first search.
+    std::vector<InitialValue> initial_h;
     int f = 0;                    // the f (A*), h (GBFS) or depth (BFS) of the last node expanded
     double seconds = 0;           // since the start: every phase
     double setup_seconds = 0;     // from the start to the first expansion (input, heuristics)

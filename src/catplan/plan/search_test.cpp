@@ -135,6 +135,17 @@ TEST(Search, ProgressIsReported) {
     EXPECT_GT(calls, 0);
 }
 
+TEST(Search, StatisticsNameEachHeuristicsValueOnTheInitialState) {
+    SearchStats st;
+    st.expanded = 3;
+    st.evaluated = 4;
+    EXPECT_EQ(describe(st, false, "; "),
+              "; expanded 3, evaluated 4, generated 0, duplicates 0, states 0\n");
+    st.initial_h = {{HeuristicKind::HFF, 6}, {HeuristicKind::LmCount, std::nullopt}};
+    EXPECT_EQ(describe(st, false, "# "), "# expanded 3, evaluated 4, generated 0, duplicates 0, "
+                                         "states 0; initial state: hff 6, lmcount dead end\n");
+}
+
 TEST(Heuristic, ValuesOnTheSussmanAnomaly) {
     auto p = sussman();
     ACSet goal_state = blocks_state(p->domain->schema, kABC, {{2, 1, 0}});

@@ -137,6 +137,7 @@ EngineResult eager_best_first(Space& space, Evaluator& h, bool astar) {
     StateId root = space.initial();
     int h0 = evaluate(space, h, kNone, kNone, root, true, nullptr, nullptr);
     ++space.stats.evaluated;
+    space.initial_values = {h0};
     if (h0 == kDeadEnd) {
         return {SearchStatus::Unsolvable, {}};
     }
@@ -244,6 +245,9 @@ public:
         for (std::size_t i = 0; i < hs_.size(); ++i) {
             values_[i] = evaluate(space_, *hs_[i], parent, a, s, is_new, &ops_,
                                   gives_preferred_[i] ? &pref_ : nullptr);
+            if (parent == kNone) {
+                space_.initial_values.push_back(values_[i]);
+            }
             if (values_[i] == kDeadEnd) {
                 space_.node(s).dead = true;
                 ++space_.stats.evaluated;

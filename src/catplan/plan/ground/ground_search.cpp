@@ -67,6 +67,9 @@ public:
 
     Evaluator& first() { return *raw_.front(); }
 
+    /// The kinds of the evaluators, in the order all() gives them.
+    const std::vector<HeuristicKind>& kinds() const { return kinds_; }
+
     std::string names() const {
         std::string out;
         for (auto k : kinds_) {
@@ -192,6 +195,13 @@ private:
         case SearchKind::Lama:
             out = lazy_best_first(space, e.all(), e.preferred(), weight, bound);
             break;
+        }
+        if (weight == 0) { // the first search's, as Fast Downward reports them
+            for (std::size_t i = 0; i < space.initial_values.size(); ++i) {
+                int v = space.initial_values[i];
+                r_.stats.initial_h.push_back(
+                    {e.kinds()[i], v == kDeadEnd ? std::nullopt : std::optional(v)});
+            }
         }
         exits_ += space.exits;
         if (exit_example_.empty()) {

@@ -158,6 +158,53 @@ TEST(GroundSearch, ExitsMakeTheC_SetSearchDecideUnsolvability) {
     EXPECT_NE(r.path_reason.find("left out"), std::string::npos) << r.path_reason;
 }
 
+// The values the first search's heuristics gave the initial state, as Fast Downward reports
+// them: none for breadth-first search; lmcut at most the least cost and at least h_max; h_FF's
+// relaxed plan at least h_max too; LAMA's two, once, however many searches anytime runs.
+TEST(GroundSearch, TheInitialHeuristicValuesAreThoseOfTheFirstSearch) {
+    for (std::uint64_t seed : {1u, 3u, 4u}) {
+        auto p = seeded_blocks(6, seed);
+        SCOPED_TRACE("seed " + std::to_string(seed));
+        auto bfs = solve(*p, SearchKind::BreadthFirst, HeuristicKind::Default);
+        ASSERT_TRUE(bfs.plan);
+        EXPECT_TRUE(bfs.stats.initial_h.empty());
+        auto value = [&](SearchKind s, HeuristicKind h) {
+            auto r = solve(*p, s, h);
+            EXPECT_EQ(r.stats.initial_h.size(), 1u);
+            if (r.stats.initial_h.size() != 1 || !r.stats.initial_h[0].value) {
+                ADD_FAILURE() << "no value of " << to_string(h);
+                return -1;
+            }
+            EXPECT_EQ(r.stats.initial_h[0].heuristic, h);
+            return *r.stats.initial_h[0].value;
+        };
+        int lmcut = value(SearchKind::AStar, HeuristicKind::LmCut);
+        int hmax = value(SearchKind::AStar, HeuristicKind::HMax);
+        int hff = value(SearchKind::GreedyBestFirst, HeuristicKind::HFF);
+        auto least = static_cast<int>(bfs.plan->steps.size());
+        EXPECT_GT(hmax, 0);
+        EXPECT_LE(hmax, lmcut);
+        EXPECT_LE(lmcut, least);
+        EXPECT_LE(hmax, hff);
+        auto any = solve(*p, SearchKind::Lama, HeuristicKind::Default, true);
+        ASSERT_EQ(any.stats.initial_h.size(), 2u);
+        EXPECT_EQ(any.stats.initial_h[0].heuristic, HeuristicKind::HFF);
+        EXPECT_EQ(any.stats.initial_h[0].value, hff);
+        EXPECT_EQ(any.stats.initial_h[1].heuristic, HeuristicKind::LmCount);
+        EXPECT_GT(any.stats.initial_h[1].value.value_or(0), 0);
+        // The C-set search's h_max of the initial state is the same (reported before a limit of
+        // one expansion stops it).
+        SearchOptions cset;
+        cset.search = SearchKind::AStar;
+        cset.heuristic = HeuristicKind::HMax;
+        cset.ground = false;
+        cset.max_nodes = 1;
+        auto c = find_plan(*p, cset);
+        ASSERT_EQ(c.stats.initial_h.size(), 1u);
+        EXPECT_EQ(c.stats.initial_h[0], (InitialValue{HeuristicKind::HMax, hmax}));
+    }
+}
+
 TEST(GroundSearch, AnUnreachableGoalIsProvedUnsolvable) {
     auto d = blocks_domain(true);
     auto p = std::make_shared<Problem>();

@@ -61,6 +61,9 @@ public:
     std::optional<SearchStatus> limit_reached();
 
     SearchStats& stats;
+    /// The heuristics' values on the initial state, in the order the engine took them (kDeadEnd
+    /// for a dead end; a lazy search stops at the first that finds one); empty without any.
+    std::vector<int> initial_values;
     /// Transitions refused because their result is outside the task, and one example.
     std::uint64_t exits = 0;
     std::string exit_example;
