@@ -68,7 +68,11 @@ private:
 
     // A breadth-first order over the pattern's parts along homs (both ways), fixed parts first,
     // then each component from a part of the object most likely to have few candidates, loose
-    // parts last (so that the first admissible image of one is as good as any).
+    // parts last (so that the first admissible image of one is as good as any). The parts an
+    // atom points to come right after it: an atom's hom values are fixed, so they add no branch,
+    // and what they check (a name) prunes the atom before its siblings branch. Queued behind
+    // them, a goal's (at ball_i roomb) atoms, all reached backwards from roomb, would be tried in
+    // every order before any ball's name was read: n! partial matches for n balls.
     void plan_order() {
         std::vector<std::vector<char>> seen(s_.num_obs());
         std::deque<std::pair<ObId, Part>> queue;
@@ -82,6 +86,18 @@ private:
             seen[a.ob.index()][a.part] = 1;
             order_.push_back(a);
             queue.emplace_back(a.ob, a.part);
+            if (u_.kind[a.ob.index()] != ObKind::Atoms) {
+                return;
+            }
+            for (HomId f : s_.homs_from(a.ob)) {
+                Part t = p_.subpart(f, a.part);
+                ObId cod = s_.hom(f).codom;
+                if (t != kNoPart && !seen[cod.index()][t]) {
+                    seen[cod.index()][t] = 1;
+                    order_.push_back({Anchor::Kind::Forward, cod, t, a.ob, a.part, f, std::nullopt});
+                    queue.emplace_back(cod, t);
+                }
+            }
         };
         auto drain = [&] {
             while (!queue.empty()) {
