@@ -94,7 +94,8 @@ private:
                 ObId cod = s_.hom(f).codom;
                 if (t != kNoPart && !seen[cod.index()][t]) {
                     seen[cod.index()][t] = 1;
-                    order_.push_back({Anchor::Kind::Forward, cod, t, a.ob, a.part, f, std::nullopt});
+                    order_.push_back(
+                        {Anchor::Kind::Forward, cod, t, a.ob, a.part, f, std::nullopt});
                     queue.emplace_back(cod, t);
                 }
             }
