@@ -137,6 +137,20 @@ struct FlatRelaxation {
         for (Prop g : r.goal()) {
             is_goal[g] = 1;
         }
+        achievers_begin.assign(r.num_props() + 1, 0);
+        for (Prop q : adds) {
+            ++achievers_begin[q + 1];
+        }
+        for (Prop q = 0; q < r.num_props(); ++q) {
+            achievers_begin[q + 1] += achievers_begin[q];
+        }
+        achievers.resize(adds.size());
+        std::vector<std::uint32_t> next(achievers_begin.begin(), achievers_begin.end() - 1);
+        for (std::uint32_t a = 0; a + 1 < add_begin.size(); ++a) {
+            for (std::uint32_t k = add_begin[a]; k < add_begin[a + 1]; ++k) {
+                achievers[next[adds[k]]++] = a;
+            }
+        }
         needed.assign(r.num_props(), 0);
         for (Prop p = 0; p < r.num_props(); ++p) {
             needed[p] = is_goal[p] != 0 || pre_of_begin[p] != pre_of_begin[p + 1] ? 1 : 0;
@@ -144,6 +158,7 @@ struct FlatRelaxation {
     }
 
     std::vector<std::uint32_t> add_begin, pre_of_begin, num_pre, pre_of;
+    std::vector<std::uint32_t> achievers_begin, achievers; // per proposition, the actions adding it
     std::vector<Prop> adds;
     std::vector<int> cost;
     std::vector<char> is_goal;
@@ -249,12 +264,14 @@ private:
         }
     }
 
-    // The relaxed plan of the best supporters; its actions applicable now are preferred. Every
-    // proposition it visits costs at most the goal's, so its cost and supporter are final.
+    // The relaxed plan of the best supporters (achiever() breaks their ties); its actions
+    // applicable now are preferred. Every proposition it visits costs at most the goal's, so its
+    // cost and supporter are final.
     int relaxed_plan(std::vector<ActionId>* preferred) {
         const auto& actions = r_.actions();
         in_plan_.assign(actions.size(), 0);
         marked_.assign(r_.num_props(), 0);
+        mark_goal_side_effects();
         stack_.assign(goals_.begin(), goals_.end());
         int h = 0;
         while (!stack_.empty()) {
@@ -264,7 +281,7 @@ private:
                 continue;
             }
             marked_[p] = 1;
-            std::uint32_t a = supporter_[p];
+            std::uint32_t a = achiever(p);
             if (in_plan_[a]) {
                 continue;
             }
@@ -283,6 +300,60 @@ private:
         return std::min(h, kDeadEnd - 1);
     }
 
+    // Whether action b adds p at p's cost (p's supporter does; others may tie with it).
+    bool least_achiever(std::uint32_t b, Prop p) const {
+        return unsat_[b] == 0 && flat_.cost[b] != 0 && flat_.cost[b] + acc_[b] == cost_[p];
+    }
+
+    // The propositions that the supporters of the goal's propositions add at their own cost:
+    // every relaxed plan that takes those supporters has them for free.
+    void mark_goal_side_effects() {
+        by_goal_.assign(r_.num_props(), 0);
+        for (Prop g : goals_) {
+            std::uint32_t a = supporter_[g];
+            if (cost_[g] == 0 || flat_.cost[a] == 0) {
+                continue;
+            }
+            for (std::uint32_t k = flat_.add_begin[a]; k < flat_.add_begin[a + 1]; ++k) {
+                Prop q = flat_.adds[k];
+                by_goal_[q] = by_goal_[q] != 0 || least_achiever(a, q) ? 1 : 0;
+            }
+        }
+    }
+
+    // The preconditions of action a that the state lacks and no goal supporter adds.
+    int new_needs(std::uint32_t a) const {
+        int n = 0;
+        for (Prop q : r_.actions()[a].pre) {
+            n += cost_[q] != 0 && by_goal_[q] == 0 ? 1 : 0;
+        }
+        return n;
+    }
+
+    // p's supporter, unless another achiever of the same cost needs fewer propositions that
+    // neither the state nor a goal's supporter gives. The supporter is the achiever found first,
+    // so it depends on the order of the actions: on a grid of cells to visit, it may reach a cell
+    // from one visited already (one more step in the relaxed plan) where another comes from a
+    // cell that a goal's supporter enters anyway (Fast Downward gets that one by the order of
+    // its operators; greedy search on hff stalls on visitall without it).
+    std::uint32_t achiever(Prop p) const {
+        std::uint32_t best = supporter_[p];
+        int best_needs = new_needs(best);
+        for (std::uint32_t k = flat_.achievers_begin[p];
+             best_needs > 0 && k < flat_.achievers_begin[p + 1]; ++k) {
+            std::uint32_t b = flat_.achievers[k];
+            if (b == best || !least_achiever(b, p)) {
+                continue; // not fired, free (a goal action), or costlier
+            }
+            int needs = new_needs(b);
+            if (needs < best_needs) {
+                best = b;
+                best_needs = needs;
+            }
+        }
+        return best;
+    }
+
     const RelaxedTask& r_;
     FlatRelaxation flat_;
     Mode mode_;
@@ -291,7 +362,7 @@ private:
     std::vector<int> cost_, acc_;
     std::vector<std::uint32_t> supporter_, unsat_;
     std::vector<Prop> init_, stack_;
-    std::vector<char> in_plan_, marked_;
+    std::vector<char> in_plan_, marked_, by_goal_;
     AdaptiveQueue queue_;
 };
 
