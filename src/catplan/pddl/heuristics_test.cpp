@@ -106,5 +106,19 @@ TEST(HffOnAGrid, GreedySearchVisitsEveryCellWithoutBacktracking) {
     }
 }
 
+// With n balls in room a to carry to room b: the n goals, at-robby roomb, and per ball "carried
+// by the left or by the right gripper", atoms of one predicate on two variables (Fast Downward's
+// count too). LAMA then finds the shortest plan, two balls per trip.
+TEST(LandmarksOfGripper, EachBallIsCarriedByOneHandOrTheOther) {
+    auto l = load("gripper-domain.pddl", "gripper-p16.pddl");
+    ASSERT_TRUE(l->import) << l->errors();
+    const std::size_t n = 16;
+    auto count = solve(*l, plan::SearchKind::LazyGreedy, plan::HeuristicKind::LmCount);
+    EXPECT_EQ(initial(count, plan::HeuristicKind::LmCount), static_cast<int>(2 * n + 1));
+    auto lama = solve(*l, plan::SearchKind::Lama, plan::HeuristicKind::Default);
+    ASSERT_TRUE(lama.plan);
+    EXPECT_EQ(lama.plan->steps.size(), 3 * n - 1); // n / 2 trips of 2 picks, a move, 2 drops
+}
+
 } // namespace
 } // namespace catplan::pddl

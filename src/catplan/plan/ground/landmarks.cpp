@@ -4,6 +4,7 @@
 #include <deque>
 #include <map>
 #include <memory>
+#include <set>
 
 namespace catplan::plan::ground {
 
@@ -182,14 +183,71 @@ private:
                 add({{var, values[0]}}, child, goal && child == kNone);
             } else if (values.size() <= kMaxDisjunction) {
                 std::vector<Fact> facts;
-                bool initially = false;
                 for (auto v : values) {
                     facts.push_back({var, v});
-                    initially = initially || init_[r_.prop(var, v)];
                 }
-                if (!initially) {
-                    add(std::move(facts), child, false);
+                add_disjunction(std::move(facts), child);
+            }
+        }
+        predicate_disjunctions(first, child);
+    }
+
+    // A disjunctive landmark before `child`, unless one of its facts holds initially or is in
+    // another disjunctive landmark (Fast Downward's RHW keeps the first of overlapping ones).
+    void add_disjunction(std::vector<Fact> facts, std::uint32_t child) {
+        for (const Fact& f : facts) {
+            if (init_[r_.prop(f)] != 0) {
+                return;
+            }
+        }
+        std::sort(facts.begin(), facts.end());
+        if (index_.find(facts) == index_.end()) {
+            for (const Fact& f : facts) {
+                if (in_disjunction_.count(f) > 0) {
+                    return;
                 }
+            }
+            in_disjunction_.insert(facts.begin(), facts.end());
+        }
+        add(std::move(facts), child, false);
+    }
+
+    // As RHW's disjunction classes: facts of atoms of one predicate (an object of the schema),
+    // one a precondition of each first achiever, are a disjunctive landmark when there are at
+    // most kMaxDisjunction of them. In a gripper domain, every first achiever of (at b roomb)
+    // needs (carry b left) or (carry b right): atoms of one predicate, on two variables, which
+    // the variables' own disjunctions above cannot see. Facts that are landmarks alone are left
+    // out of the classes.
+    void predicate_disjunctions(const std::vector<std::uint32_t>& first, std::uint32_t child) {
+        struct Class {
+            std::size_t users = 0; // first achievers with a precondition in the class
+            std::size_t last = SIZE_MAX;
+            std::vector<Fact> facts;
+        };
+
+        std::map<std::uint32_t, Class> classes; // by the atoms' object
+        for (std::size_t i = 0; i < first.size(); ++i) {
+            for (Prop q : r_.actions()[first[i]].pre) {
+                Fact f = r_.fact(q);
+                if (f.var == kNone || f.value != 1 ||
+                    task_.vars[f.var].kind != Variable::Kind::Atom ||
+                    index_.count(std::vector<Fact>{f}) > 0) {
+                    continue;
+                }
+                auto& c = classes[task_.atoms[task_.vars[f.var].owner].ob.index()];
+                if (c.last != i) {
+                    c.last = i;
+                    ++c.users;
+                }
+                if (std::find(c.facts.begin(), c.facts.end(), f) == c.facts.end()) {
+                    c.facts.push_back(f);
+                }
+            }
+        }
+        for (auto& [ob, c] : classes) {
+            if (c.users == first.size() && c.facts.size() > 1 &&
+                c.facts.size() <= kMaxDisjunction) {
+                add_disjunction(std::move(c.facts), child);
             }
         }
     }
@@ -202,6 +260,7 @@ private:
     std::vector<std::uint32_t> unsat_;
     std::vector<Landmark> lms_;
     std::map<std::vector<Fact>, std::uint32_t> index_;
+    std::set<Fact> in_disjunction_; // the facts of the disjunctive landmarks
     std::deque<std::uint32_t> queue_;
 };
 

@@ -1,12 +1,15 @@
 #pragma once
 // Landmarks of a ground task and the landmark-count heuristic (Richter & Westphal's LAMA).
 //
-// A landmark is a fact, or a set of facts of one variable (disjunctive), that every plan makes
-// true at some point. They are found by back-chaining from the goal (Hoffmann, Porteous & Sebastia;
+// A landmark is a fact, or a set of facts (disjunctive) one of which, that every plan makes true
+// at some point. They are found by back-chaining from the goal (Hoffmann, Porteous & Sebastia;
 // Richter, Helmert & Westphal): for a landmark not true initially, its possible first achievers
 // are the achievers reachable in the relaxation without it; the preconditions they all share are
-// landmarks ordered greedy-necessarily before it, and a variable that every first achiever needs
-// (with different values) gives a disjunctive landmark of those values.
+// landmarks ordered greedy-necessarily before it. Disjunctive landmarks come from a variable that
+// every first achiever needs (with different values), and, as RHW's disjunction classes, from
+// atoms of one predicate one of which every first achiever needs (gripper's (carry ?b left) or
+// (carry ?b right)); at most four facts, none true initially, and a disjunction that shares a
+// fact with one found before is dropped (as Fast Downward does).
 //
 // The heuristic counts, per state, the landmarks not yet accepted plus the accepted ones needed
 // again (false now, and a goal or greedy-necessarily before one not accepted). A landmark is
@@ -19,7 +22,7 @@
 namespace catplan::plan::ground {
 
 struct Landmark {
-    std::vector<Fact> facts;            // one fact, or several values of one variable
+    std::vector<Fact> facts;            // one fact, or the facts of a disjunctive landmark
     std::vector<std::uint32_t> parents; // greedy-necessary predecessors
     std::vector<std::uint32_t> children;
     bool goal = false;
