@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <fmt/format.h>
+#include <optional>
 #include <set>
 #include <string>
 #include <utility>

@@ -1,6 +1,7 @@
 #include "catplan/plan/ground/landmarks.hpp"
 
 #include <algorithm>
+#include <cstdint>
 #include <deque>
 #include <map>
 #include <memory>
