@@ -151,8 +151,8 @@ void Repairer::recycle(NamedState&& old) {
 }
 
 Repair Repairer::repair(const NamedState& y, const ACSet& subgoal, std::size_t step,
-                        const CreatedName& name) {
-    Request q{y, subgoal, step, name};
+                        const CreatedName& name, const plan::Step* source) {
+    Request q{y, subgoal, step, name, source};
     Repair out;
     auto focus = Focus::of(y, subgoal);
     if (embeds_by_names(y, subgoal, &focus)) {
@@ -160,14 +160,17 @@ Repair Repairer::repair(const NamedState& y, const ACSet& subgoal, std::size_t s
         out.by_names = true;
         return out;
     }
-    if (focus && focus_repair(q, *focus, out)) {
+    if (use_action_repair(q, out)) {
         return out;
     }
-    if (embeds(subgoal, y.state())) {
-        out.found = true; // by another morphism than the names'
-        return out;
+    if (!(focus && focus_repair(q, *focus, out))) {
+        if (embeds(subgoal, y.state())) {
+            out.found = true; // by another morphism than the names'
+            return out;
+        }
+        whole_repair(q, out);
     }
-    whole_repair(q, out);
+    remember_action_repair(q, out);
     return out;
 }
 
@@ -214,6 +217,73 @@ bool Repairer::use_memo(const Request& q, const RepairMemo& memo, const RepairSh
     take(out, std::move(steps), std::move(*scratch_), *replayed, e->least_cost);
     out.reused_from = e->origin;
     return true;
+}
+
+// The plans that repaired earlier steps of this source action, on this step's arguments, in the
+// order they were found: the first that replays on the whole state. Not where repairs sum costs
+// (a least-cost claim needs the shape with its values).
+bool Repairer::use_action_repair(const Request& q, Repair& out) {
+    if (by_cost_ || q.source == nullptr) {
+        return false;
+    }
+    auto it = by_action_.find(q.source->action);
+    if (it == by_action_.end()) {
+        return false;
+    }
+    for (const auto& a : it->second) {
+        std::vector<plan::Step> steps(a.actions.size());
+        bool fits = true;
+        for (std::size_t k = 0; k < steps.size() && fits; ++k) {
+            steps[k].action = a.actions[k];
+            for (std::uint32_t i : a.args[k]) {
+                fits = fits && i < q.source->args.size();
+                steps[k].args.push_back(fits ? q.source->args[i] : std::string());
+            }
+        }
+        if (!fits || !costed(steps)) {
+            continue;
+        }
+        auto replayed = replay(*target_, scratch_copy(q.y), steps, q.subgoal, true, q.name);
+        if (!replayed) {
+            continue; // another context: a block to clear first, a different place
+        }
+        take(out, std::move(steps), std::move(*scratch_), *replayed, false);
+        out.reused_from = a.origin; // no focus was built: focus_parts stays 0
+        return true;
+    }
+    return false;
+}
+
+// Remembers r's plan for q's source action when every argument of its steps is an argument of
+// the source step (a plan that moves another part depends on where that part is).
+void Repairer::remember_action_repair(const Request& q, const Repair& r) {
+    if (by_cost_ || q.source == nullptr || !r.found || r.steps.empty()) {
+        return;
+    }
+    auto& known = by_action_[q.source->action];
+    if (known.size() >= kActionRepairs) {
+        return;
+    }
+    ActionRepair a;
+    a.origin = r.reused_from.value_or(q.step);
+    const auto& source_args = q.source->args;
+    for (const auto& step : r.steps) {
+        a.actions.push_back(step.action);
+        auto& args = a.args.emplace_back();
+        for (const auto& arg : step.args) {
+            auto at = std::find(source_args.begin(), source_args.end(), arg);
+            if (at == source_args.end()) {
+                return;
+            }
+            args.push_back(static_cast<std::uint32_t>(at - source_args.begin()));
+        }
+    }
+    bool seen = std::any_of(known.begin(), known.end(), [&](const ActionRepair& b) {
+        return b.actions == a.actions && b.args == a.args;
+    });
+    if (!seen) {
+        known.push_back(std::move(a));
+    }
 }
 
 bool Repairer::focus_repair(const Request& q, const Focus& focus, Repair& out) {

@@ -8,12 +8,14 @@
 // that forgets the gripper).
 //
 // No step is needed when Y_{i-1} already holds the subgoal by names (focus.hpp: each part that
-// homs point into is its namesake, each fact is found by its arguments). Otherwise a repair costs
-// what the step touches, not the size of the state: the local plan is searched first on a focus
-// of Y_{i-1} (the parts near what the subgoal changes: radius 0, the seeds alone, then 1, 2 and
-// 4), its goal reached by names, unless a focus of the same shape was searched before in this
-// transfer: its plan, renamed, is used then (repair_memo.hpp); a plan found there is replayed on
-// the whole Y_{i-1} as DPO steps and the whole subgoal is checked to hold by names in the result
+// homs point into is its namesake, each fact is found by its arguments). Otherwise the plans that
+// repaired earlier steps of the same source action are tried first, on this step's arguments
+// (ActionRepair below), each replayed and checked as below. Then a repair costs what the step
+// touches, not the size of the state: the local plan is searched first on a focus of Y_{i-1} (the
+// parts near what the subgoal changes: radius 0, the seeds alone, then 1, 2 and 4), its goal
+// reached by names, unless a focus of the same shape was searched before in this transfer: its
+// plan, renamed, is used then (repair_memo.hpp); a plan found there is replayed on the whole
+// Y_{i-1} as DPO steps and the whole subgoal is checked to hold by names in the result
 // before it is used, and the result is the transfer's next target state (one that fails, for a
 // negative condition or a dangling part the focus does not see, is set aside and the next focus
 // tried). Only when no focus gives a plan, and the subgoal does not embed in Y_{i-1} by another
@@ -36,6 +38,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 namespace catplan::transfer {
@@ -74,13 +77,15 @@ struct Repair {
     std::optional<NamedState> reached;
     /// The statistics of the searches, summed (the focuses tried and the whole state).
     plan::SearchStats stats;
-    /// When found on a focus: how many parts of y it kept (focus.hpp); 0 on the whole state.
+    /// When found on a focus: how many parts of y it kept (focus.hpp); 0 on the whole state, or
+    /// where an earlier step's plan for the same source action was used without a focus.
     std::size_t focus_parts = 0;
     /// The subgoal embeds in the state the steps reach sending each part that homs point into to
     /// its namesake (else by another monic morphism).
     bool by_names = false;
     /// The plan is that of the repair of this earlier source step, renamed: its focus had the
-    /// same shape (repair_memo.hpp), so no search was needed.
+    /// same shape (repair_memo.hpp), or it repaired the same source action with its arguments
+    /// in the same roles, so no search was needed.
     std::optional<std::size_t> reused_from;
     /// What the steps cost, where the target's costs are known.
     std::optional<std::int64_t> cost;
@@ -104,9 +109,10 @@ public:
 
     /// A plan in the target domain from y to a state into which subgoal embeds monically, for
     /// source step `step` (a later repair of the same shape names it as the one it reuses), and
-    /// the state it reaches, whose created parts `name` names.
+    /// the state it reaches, whose created parts `name` names. With the source step itself, a
+    /// plan that repaired a step of the same source action is tried first (see below).
     Repair repair(const NamedState& y, const acset::ACSet& subgoal, std::size_t step,
-                  const CreatedName& name);
+                  const CreatedName& name, const plan::Step* source = nullptr);
 
     /// Hands back a state the caller is done with (the y a repair's reached state replaced), whose
     /// memory the next replay reuses.
@@ -119,7 +125,23 @@ private:
         const acset::ACSet& subgoal;
         std::size_t step;
         const CreatedName& name;
+        const plan::Step* source; ///< the source step, when the caller gives it
     };
+
+    // A plan that repaired a step of one source action, each argument of its steps written as
+    // the position of that argument among the source step's. A later step of the same action
+    // tries it, on its own arguments, before any focus is built: a transfer repeats few kinds
+    // of step, and the replay on the whole state checks it as any remembered plan.
+    struct ActionRepair {
+        std::vector<std::string> actions;
+        std::vector<std::vector<std::uint32_t>> args;
+        std::size_t origin = 0; ///< the repair that searched it
+    };
+
+    static constexpr std::size_t kActionRepairs = 4; ///< remembered per source action, at most
+
+    bool use_action_repair(const Request& q, Repair& out);
+    void remember_action_repair(const Request& q, const Repair& r);
 
     bool focus_repair(const Request& q, const Focus& focus, Repair& out);
     bool use_memo(const Request& q, const RepairMemo& memo, const RepairShape& shape, Repair& out,
@@ -160,6 +182,8 @@ private:
     std::string why_no_task_; ///< why it could not be compiled (then each repair compiles its own)
     RepairMemo memo_;         ///< the plans of the focuses searched, by shape
     RepairMemo changes_;      ///< the same plans, by the shape of what they change
+    /// Without by_cost_: per source action, the plans that repaired its steps (ActionRepair).
+    std::unordered_map<std::string, std::vector<ActionRepair>> by_action_;
     std::optional<NamedState> scratch_; ///< see scratch_copy
 };
 

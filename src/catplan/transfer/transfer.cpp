@@ -445,7 +445,8 @@ private:
             repairer_.emplace(own.domain, options_.repair, options_.target_values);
         }
         auto repair = repairer_->repair(
-            *y_, subgoal, i, [&](NamedState& z, ObId ob) { return created_name(z, ob, i); });
+            *y_, subgoal, i, [&](NamedState& z, ObId ob) { return created_name(z, ob, i); },
+            &plan_.steps[i]);
         if (!repair.found) {
             return fail_at(i, fmt::format("{}; repair: {}",
                                           c == nullptr ? "no target action corresponds"

@@ -670,9 +670,13 @@ TEST(Transfer, ARepairIsFoundOnAFocusOfTheStateOrOnTheWholeStateAlike) {
         ASSERT_EQ(t.steps.size(), 2u);
         std::vector<std::string> steps;
         // The first repair needs A, B and C (A is on B, and goes on C): a focus of 3 of the 4
-        // blocks; the second needs all four, so its focus is the whole state.
+        // blocks. The second is a move too: the first's plan, on its own arguments, replays on
+        // the whole state, so it is searched on no focus (its own would be all four blocks).
         EXPECT_EQ(t.steps[0].repair_focus, focus ? 3u : 0u);
+        EXPECT_FALSE(t.steps[0].repair_reused_from.has_value());
         EXPECT_EQ(t.steps[1].repair_focus, 0u);
+        EXPECT_EQ(t.steps[1].repair_reused_from, std::optional<std::size_t>(0));
+        EXPECT_EQ(t.steps[1].repair_stats.expanded, 0u);
         for (const auto& st : t.steps) {
             EXPECT_EQ(st.kind, StepTransfer::Kind::Repaired);
             EXPECT_GE(st.target_steps.size(), 2u); // a lift before the put
