@@ -1,6 +1,7 @@
 // The ground heuristics on PDDL domains whose shapes test them: FF's relaxed plan on a grid of
-// cells to visit (where the supporter found first may come through a cell visited already), and
-// RHW's disjunctive landmarks over atoms of one predicate (gripper's two hands).
+// cells to visit (where the supporter found first may come through a cell visited already), the
+// ground task's moves into visited cells (PDDL's set semantics), and RHW's disjunctive landmarks
+// over atoms of one predicate (gripper's two hands).
 
 #include "catplan/pddl/detail/test_load.hpp"
 #include "catplan/plan/search.hpp"
@@ -32,21 +33,22 @@ std::string cell(int x, int y) {
     return fmt::format("cell-{}-{}", x, y);
 }
 
-// An n-by-n grid, its cells connected to their four neighbours; the robot at `at`, the cells
-// `visited` visited (`at` among them), and every cell to be visited.
+// An n-by-n grid (n-by-height if given), its cells connected to their four neighbours; the robot at
+// `at`, the cells `visited` visited (`at` among them), and every cell to be visited.
 std::string visitall_problem(int n, std::pair<int, int> at,
-                             const std::set<std::pair<int, int>>& visited) {
+                             const std::set<std::pair<int, int>>& visited, int height = 0) {
+    height = height == 0 ? n : height;
     std::string objects, init = fmt::format("(at-robot {})", cell(at.first, at.second));
     std::string goal;
     for (int x = 0; x < n; ++x) {
-        for (int y = 0; y < n; ++y) {
+        for (int y = 0; y < height; ++y) {
             objects += cell(x, y) + " ";
             goal += fmt::format("(visited {}) ", cell(x, y));
             if (visited.contains({x, y})) {
                 init += fmt::format(" (visited {})", cell(x, y));
             }
             for (auto [dx, dy] : {std::pair{1, 0}, {-1, 0}, {0, 1}, {0, -1}}) {
-                if (x + dx >= 0 && x + dx < n && y + dy >= 0 && y + dy < n) {
+                if (x + dx >= 0 && x + dx < n && y + dy >= 0 && y + dy < height) {
                     init += fmt::format(" (connected {} {})", cell(x, y), cell(x + dx, y + dy));
                 }
             }
@@ -105,6 +107,30 @@ TEST(HffOnAGrid, GreedySearchVisitsEveryCellWithoutBacktracking) {
         EXPECT_EQ(r.stats.expanded, 35U) << r.config;
         EXPECT_EQ(initial(r, plan::HeuristicKind::HFF), 35);
     }
+}
+
+// A move into a cell visited already adds `visited` again: PDDL's set semantics make that no
+// change, so the ground task keeps the move (it was an exit, "a second, equal part", and a robot
+// in the middle of a corridor could not reach both ends).
+TEST(VisitedCells, TheRobotWalksBackThroughACellItVisited) {
+    auto l = load_text(kVisitall, visitall_problem(3, {1, 0}, {{1, 0}}, 1));
+    ASSERT_TRUE(l->import) << l->errors();
+    auto r = solve(*l, plan::SearchKind::GreedyBestFirst, plan::HeuristicKind::HFF);
+    ASSERT_TRUE(r.plan);
+    EXPECT_EQ(r.plan->steps.size(), 3U); // to one end, back through the middle, to the other
+}
+
+// From a cell next to the corner of a 7x7 grid, no path visits each cell once (a chessboard
+// colouring: 25 cells of the corner's colour, 24 of the start's), so a plan has at least 49
+// moves. Greedy search on hff walks through visited cells where it must (3.0 M expansions and
+// no plan while such moves were exits).
+TEST(VisitedCells, GreedySearchRevisitsWhereNoPathVisitsEachCellOnce) {
+    auto l = load_text(kVisitall, visitall_problem(7, {0, 1}, {{0, 1}}));
+    ASSERT_TRUE(l->import) << l->errors();
+    auto r = solve(*l, plan::SearchKind::GreedyBestFirst, plan::HeuristicKind::HFF);
+    ASSERT_TRUE(r.plan);
+    EXPECT_GE(r.plan->steps.size(), 49U);
+    EXPECT_LT(r.stats.expanded, 100U);
 }
 
 // With n balls in room a to carry to room b: the n goals, at-robby roomb, and per ball "carried

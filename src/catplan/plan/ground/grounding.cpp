@@ -423,11 +423,16 @@ private:
         return a;
     }
 
-    void add_atom(Draft& d, Atom a) {
+    // Sets the atom present; unless its object is one of the rule's relations (a fact that
+    // holds already is that fact, rule.hpp), it must not be present before.
+    void add_atom(Draft& d, Atom a, const Rule& rule) {
+        bool relation = std::binary_search(rule.relations.begin(), rule.relations.end(), a.ob);
         AtomId id = u_.intern(std::move(a));
         VarId var = task_.atoms[id].var;
         set_index(d, var, 1);
-        d.creates.push_back(var);
+        if (!relation) {
+            d.creates.push_back(var);
+        }
     }
 
     // Values of the parts R touches, once every R part has an image.
@@ -446,7 +451,7 @@ private:
                     if (old != nullptr) {
                         set_index(d, old->var, 0);
                     }
-                    add_atom(d, std::move(a));
+                    add_atom(d, std::move(a), rule);
                     continue;
                 }
                 ObjectId id = img[ob_i][rp].id;

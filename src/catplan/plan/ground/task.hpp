@@ -22,8 +22,9 @@
 // that must not hold (the dangling condition on multi-valued variables); `nacs` lists, per
 // extension of the match along a negative application condition, the facts under which it holds;
 // its effects assign variables. An action whose result the task cannot represent (a second equal
-// atom, no free slot, an unknown value copied to another cell) is an *exit*: it is recognised when
-// applicable but never applied, and the search says how often that happened.
+// atom of an object that is not one of the rule's relations, no free slot, an unknown value copied
+// to another cell) is an *exit*: it is recognised when applicable but never applied, and the search
+// says how often that happened.
 
 #include "catplan/acset/value.hpp"
 #include "catplan/base/id.hpp"
