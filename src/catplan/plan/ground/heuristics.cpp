@@ -137,20 +137,6 @@ struct FlatRelaxation {
         for (Prop g : r.goal()) {
             is_goal[g] = 1;
         }
-        achievers_begin.assign(r.num_props() + 1, 0);
-        for (Prop q : adds) {
-            ++achievers_begin[q + 1];
-        }
-        for (Prop q = 0; q < r.num_props(); ++q) {
-            achievers_begin[q + 1] += achievers_begin[q];
-        }
-        achievers.resize(adds.size());
-        std::vector<std::uint32_t> next(achievers_begin.begin(), achievers_begin.end() - 1);
-        for (std::uint32_t a = 0; a + 1 < add_begin.size(); ++a) {
-            for (std::uint32_t k = add_begin[a]; k < add_begin[a + 1]; ++k) {
-                achievers[next[adds[k]]++] = a;
-            }
-        }
         needed.assign(r.num_props(), 0);
         for (Prop p = 0; p < r.num_props(); ++p) {
             needed[p] = is_goal[p] != 0 || pre_of_begin[p] != pre_of_begin[p + 1] ? 1 : 0;
@@ -158,7 +144,6 @@ struct FlatRelaxation {
     }
 
     std::vector<std::uint32_t> add_begin, pre_of_begin, num_pre, pre_of;
-    std::vector<std::uint32_t> achievers_begin, achievers; // per proposition, the actions adding it
     std::vector<Prop> adds;
     std::vector<int> cost;
     std::vector<char> is_goal;
@@ -339,9 +324,10 @@ private:
     std::uint32_t achiever(Prop p) const {
         std::uint32_t best = supporter_[p];
         int best_needs = new_needs(best);
-        for (std::uint32_t k = flat_.achievers_begin[p];
-             best_needs > 0 && k < flat_.achievers_begin[p + 1]; ++k) {
-            std::uint32_t b = flat_.achievers[k];
+        for (std::uint32_t b : r_.achievers(p)) {
+            if (best_needs == 0) {
+                break;
+            }
             if (b == best || !least_achiever(b, p)) {
                 continue; // not fired, free (a goal action), or costlier
             }

@@ -18,12 +18,6 @@ class Finder {
 public:
     Finder(const Task& task, const RelaxedTask& r, Budget& budget)
         : task_(task), r_(r), budget_(budget) {
-        achievers_.assign(r.num_props(), {});
-        for (std::uint32_t a = 0; a < r.actions().size(); ++a) {
-            for (Prop p : r.actions()[a].add) {
-                achievers_[p].push_back(a);
-            }
-        }
         init_.assign(r.num_props(), 0);
         for (VarId v = 0; v < task.vars.size(); ++v) {
             init_[r.prop(v, task.initial[v])] = 1;
@@ -54,7 +48,7 @@ public:
         }
         for (auto& lm : lms_) {
             for (const Fact& f : lm.facts) {
-                const auto& ach = achievers_[r_.prop(f)];
+                auto ach = r_.achievers(r_.prop(f));
                 lm.achievers.insert(lm.achievers.end(), ach.begin(), ach.end());
             }
             std::sort(lm.achievers.begin(), lm.achievers.end());
@@ -101,7 +95,7 @@ private:
         reached_.assign(r_.num_props(), 0);
         banned_.assign(actions.size(), 0);
         for (Prop p : props) {
-            for (std::uint32_t a : achievers_[p]) {
+            for (std::uint32_t a : r_.achievers(p)) {
                 banned_[a] = 1;
             }
         }
@@ -148,7 +142,7 @@ private:
         const auto& actions = r_.actions();
         std::vector<std::uint32_t> first;
         for (Prop p : props) {
-            for (std::uint32_t a : achievers_[p]) {
+            for (std::uint32_t a : r_.achievers(p)) {
                 const auto& pre = actions[a].pre;
                 if (std::all_of(pre.begin(), pre.end(), [&](Prop q) { return reached_[q] != 0; })) {
                     first.push_back(a);
@@ -256,7 +250,6 @@ private:
     const Task& task_;
     const RelaxedTask& r_;
     Budget& budget_;
-    std::vector<std::vector<std::uint32_t>> achievers_;
     std::vector<char> init_, reached_, banned_;
     std::vector<std::uint32_t> unsat_;
     std::vector<Landmark> lms_;

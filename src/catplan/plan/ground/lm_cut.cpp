@@ -18,14 +18,7 @@ constexpr int kInf = std::numeric_limits<int>::max();
 
 class LmCut final : public Evaluator {
 public:
-    LmCut(const RelaxedTask& r, Budget& budget) : r_(r), budget_(budget) {
-        achievers_.assign(r.num_props(), {});
-        for (std::uint32_t a = 0; a < r.actions().size(); ++a) {
-            for (Prop p : r.actions()[a].add) {
-                achievers_[p].push_back(a);
-            }
-        }
-    }
+    LmCut(const RelaxedTask& r, Budget& budget) : r_(r), budget_(budget) {}
 
     int evaluate(StateId, const std::vector<std::uint32_t>& state, const std::vector<ActionId>*,
                  std::vector<ActionId>*) override {
@@ -163,7 +156,7 @@ private:
         while (!stack.empty()) {
             Prop p = stack.back();
             stack.pop_back();
-            for (std::uint32_t a : achievers_[p]) {
+            for (std::uint32_t a : r_.achievers(p)) {
                 Prop s = supporter_[a];
                 if (cost_[a] == 0 && s != kNone && value_[s] != kInf && !zone_[s]) {
                     zone_[s] = 1;
@@ -223,7 +216,6 @@ private:
 
     const RelaxedTask& r_;
     Budget& budget_;
-    std::vector<std::vector<std::uint32_t>> achievers_;
     std::vector<int> cost_, value_, acc_;
     std::vector<std::uint32_t> unsat_, cut_;
     std::vector<Prop> supporter_, init_;

@@ -80,6 +80,26 @@ RelaxedTask::RelaxedTask(const Task& task, CostType costs) {
             pre_of_[p].push_back(i);
         }
     }
+    index_achievers();
+}
+
+void RelaxedTask::index_achievers() {
+    achievers_begin_.assign(num_props_ + 1, 0);
+    for (const auto& a : actions_) {
+        for (Prop p : a.add) {
+            ++achievers_begin_[p + 1];
+        }
+    }
+    for (Prop p = 0; p < num_props_; ++p) {
+        achievers_begin_[p + 1] += achievers_begin_[p];
+    }
+    achievers_.resize(achievers_begin_[num_props_]);
+    std::vector<std::uint32_t> next(achievers_begin_.begin(), achievers_begin_.end() - 1);
+    for (std::uint32_t i = 0; i < actions_.size(); ++i) {
+        for (Prop p : actions_[i].add) {
+            achievers_[next[p]++] = i;
+        }
+    }
 }
 
 void RelaxedTask::drop_dominated(const Task& task) {

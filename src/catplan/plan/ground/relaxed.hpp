@@ -12,6 +12,7 @@
 
 #include "catplan/plan/ground/task.hpp"
 
+#include <span>
 #include <vector>
 
 namespace catplan::plan::ground {
@@ -49,6 +50,12 @@ public:
     /// The relaxed actions with proposition p as a precondition.
     const std::vector<std::uint32_t>& pre_of(Prop p) const { return pre_of_[p]; }
 
+    /// The relaxed actions that add proposition p, in the order of actions().
+    std::span<const std::uint32_t> achievers(Prop p) const {
+        return {achievers_.data() + achievers_begin_[p],
+                achievers_.data() + achievers_begin_[p + 1]};
+    }
+
     /// The relaxed actions with no precondition.
     const std::vector<std::uint32_t>& unconditional() const { return unconditional_; }
 
@@ -62,12 +69,14 @@ public:
 
 private:
     void drop_dominated(const Task& task);
+    void index_achievers();
 
     std::vector<std::uint32_t> offset_;
     std::uint32_t num_props_ = 0, var_props_ = 0;
     std::vector<RelaxedAction> actions_;
     std::vector<std::vector<std::uint32_t>> pre_of_;
     std::vector<std::uint32_t> unconditional_;
+    std::vector<std::uint32_t> achievers_begin_, achievers_; // per proposition, in one array
     std::vector<Prop> goal_;
     std::vector<std::uint32_t> relaxed_of_;
 };
