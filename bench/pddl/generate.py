@@ -147,7 +147,7 @@ def rovers(size, rng, name):
                  f"(equipped_for_rock_analysis {r})", f"(equipped_for_imaging {r})",
                  f"(on_board {c} {r})", f"(calibration_target {c} {rng.choice(os_)})"]
         init += [f"(supports {c} {m})" for m in modes]
-        init += [f"(can_traverse {r} {a} {b})" for a, b in visible]
+        init += [f"(can_traverse {r} {a} {b})" for a, b in sorted(visible)]
     soil = rng.sample(ws, max(1, nw // 2))
     rock = rng.sample(ws, max(1, nw // 2))
     init += [f"(at_soil_sample {w})" for w in soil] + [f"(at_rock_sample {w})" for w in rock]
