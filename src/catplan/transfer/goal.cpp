@@ -23,7 +23,6 @@ struct Statement {
     HomId hom;
     AttrId attr;
     Value value;
-    std::string text;
 };
 
 struct GoalPart {
@@ -52,7 +51,6 @@ Goal read_goal(const ACSet& g) {
         auto [ob, p] = out.parts[i];
         Statement st;
         st.part = i;
-        st.text = part_statement(g, ob, p);
         out.statements.push_back(st);
         for (HomId f : s.homs_from(ob)) {
             Part q = g.subpart(f, p);
@@ -64,7 +62,6 @@ Goal read_goal(const ACSet& g) {
             h.part = i;
             h.hom = f;
             h.other = out.index[s.hom(f).codom.index()][q];
-            h.text = hom_statement(g, f, p);
             out.statements.push_back(h);
         }
         for (AttrId a : s.attrs_from(ob)) {
@@ -77,11 +74,24 @@ Goal read_goal(const ACSet& g) {
             at.part = i;
             at.attr = a;
             at.value = v;
-            at.text = attr_statement(g, a, p);
             out.statements.push_back(at);
         }
     }
     return out;
+}
+
+// A statement in words (made only where it is printed: a goal of a large state has many).
+std::string text(const ACSet& g, const Goal& goal, const Statement& st) {
+    auto [ob, p] = goal.parts[st.part];
+    switch (st.kind) {
+    case Statement::Kind::Part:
+        return part_statement(g, ob, p);
+    case Statement::Kind::Hom:
+        return hom_statement(g, st.hom, p);
+    case Statement::Kind::Attr:
+        return attr_statement(g, st.attr, p);
+    }
+    CATPLAN_UNREACHABLE("statement kind");
 }
 
 // Branch and bound over the goal's parts in a fixed order; each statement is decided when the
@@ -260,10 +270,15 @@ private:
 
 std::vector<std::string> goal_statements(const ACSet& goal) {
     std::vector<std::string> out;
-    for (auto& st : read_goal(goal).statements) {
-        out.push_back(std::move(st.text));
+    Goal g = read_goal(goal);
+    for (const auto& st : g.statements) {
+        out.push_back(text(goal, g, st));
     }
     return out;
+}
+
+std::size_t count_goal_statements(const ACSet& goal) {
+    return read_goal(goal).statements.size();
 }
 
 GoalSatisfaction goal_satisfaction(const ACSet& goal, const ACSet& x, std::uint64_t node_limit) {
@@ -280,7 +295,7 @@ GoalSatisfaction goal_satisfaction(const ACSet& goal, const ACSet& x, std::uint6
     out.exact = search.exact();
     for (const auto& st : g.statements) {
         if (!search.holds(st)) {
-            out.unsatisfied.push_back(st.text);
+            out.unsatisfied.push_back(text(goal, g, st));
         }
     }
     return out;

@@ -40,6 +40,9 @@ struct GoalSatisfaction {
 /// per object).
 std::vector<std::string> goal_statements(const acset::ACSet& goal);
 
+/// How many statements goal_statements gives, without putting them in words.
+std::size_t count_goal_statements(const acset::ACSet& goal);
+
 /// The paper's Metric 1 for goal in x (same schema); node_limit 0 means no limit.
 GoalSatisfaction goal_satisfaction(const acset::ACSet& goal, const acset::ACSet& x,
                                    std::uint64_t node_limit = 1'000'000);

@@ -85,6 +85,7 @@ TEST(GoalSatisfaction, StatementsInWords) {
               (std::vector<std::string>{"Block a", "hasColor(a) == \"red\"", "Block b",
                                         "hasColor(b) == \"green\"", "On o1", "on_l(o1) == a",
                                         "on_r(o1) == b"}));
+    EXPECT_EQ(count_goal_statements(g), 7U); // the same statements, not put in words
 }
 
 TEST(GoalSatisfaction, UnnamedPartsAreNamedByATermThatReachesThem) {

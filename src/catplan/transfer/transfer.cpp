@@ -215,6 +215,7 @@ public:
         }
         keep_states();
         t0 = Clock::now();
+        out_.steps.reserve(plan_.steps.size());
         for (std::size_t i = 0; i < plan_.steps.size(); ++i) {
             if (!step(i)) {
                 break;
@@ -711,7 +712,7 @@ void judge(TransferResult& out, const ACSet& y, std::optional<Fault> source,
                  fmt::format("the intended goal {} is not satisfied: {}", v.goal_name, m.error())});
         }
     } else if (embedding) {
-        v.goal.total = goal_statements(*out.target_goal).size() + out.target_goal_conditions.size();
+        v.goal.total = count_goal_statements(*out.target_goal) + out.target_goal_conditions.size();
         v.goal.satisfied = v.goal.total;
     } else {
         v.goal = goal_satisfaction(*out.target_goal, y);
