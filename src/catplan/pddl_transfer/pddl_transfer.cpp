@@ -131,11 +131,10 @@ bool add_target(const lang::Module& m, const lang::Declaration& map, bool has_ta
     for (const auto& c : map.actions) {
         named.emplace_back(c.source, c.target);
     }
-    auto generated = transfer::migrate_domain(*s.map, *s.source->problem->domain);
     auto source = s.source;
     auto own_import = s.target;
     s.actions = std::make_shared<const transfer::TargetActions>(transfer::correspond_domain(
-        *generated.domain, s.target->domain, named,
+        *s.generated->domain, s.target->domain, named,
         [own_import](std::string_view r) { return own_import->action_of(r); },
         [source](std::string_view r) { return source->action_of(r); }));
     return true;
@@ -177,6 +176,8 @@ std::optional<Setting> load_setting(const lang::Module& m, const lang::Declarati
     }
     s.source = std::make_shared<const pddl::Import>(std::move(*with_problem));
     s.functions = map.functions;
+    s.generated = std::make_shared<const transfer::MigratedDomain>(
+        transfer::migrate_domain(*s.map, *s.source->problem->domain));
     if (!add_target(m, map, target_problem_file.has_value(), s, sink)) {
         return std::nullopt;
     }
@@ -222,6 +223,7 @@ transfer::TransferOptions transfer_options(const Setting& s, const pddl::IpcPlan
         o.goal_name = s.target_problem->name;
     }
     o.target_actions = s.actions;
+    o.migrated_domain = s.generated;
     o.target_values = s.target_values;
     return o;
 }

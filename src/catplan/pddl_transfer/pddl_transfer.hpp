@@ -28,6 +28,8 @@ struct Setting {
     std::shared_ptr<const pddl::Import> source;
     /// The target domain's import, when the map's target is a PDDL domain (else null).
     std::shared_ptr<const pddl::Import> target;
+    /// Δ_F of the source domain: the generated actions.
+    std::shared_ptr<const transfer::MigratedDomain> generated;
     /// The target's own actions, matched to the generated ones (with the target).
     std::shared_ptr<const transfer::TargetActions> actions;
     /// The user's own target problem, and its goal (the goal the verdict judges).

@@ -190,7 +190,8 @@ public:
     std::optional<Fault> run() {
         auto t0 = Clock::now();
         ACSet x0 = named(*problem_.initial);
-        out_.target_domain = migrate_domain(f_, *problem_.domain);
+        out_.target_domain = options_.migrated_domain ? *options_.migrated_domain
+                                                      : migrate_domain(f_, *problem_.domain);
         ACSet y0 = migrate::migrate(f_, x0);
         if (options_.rename_by_type) {
             renaming_ = names_by_type(y0);

@@ -112,6 +112,10 @@ struct TransferOptions {
     /// action its generated action corresponds to, else repaired (repair.hpp). Null to carry
     /// out the generated actions.
     std::shared_ptr<const TargetActions> target_actions;
+    /// Δ_F of the problem's domain (migrate_domain with its default name), where the caller has
+    /// it already: a setting that matched the target's actions against it, or a batch. Null: the
+    /// transfer migrates the domain.
+    std::shared_ptr<const MigratedDomain> migrated_domain;
     /// The target problem's function values, which the costs of the target's own actions read,
     /// where they are known: a repair then takes no step without a cost. Unset: repairs read no
     /// costs.
