@@ -153,17 +153,15 @@ std::optional<ACSet> build_colimit(Elaborator& ctx, const MacroCall& form,
 
 // ---- @acset -------------------------------------------------------------------------------------
 
-// The most parts and variables an @acset may declare in all (docs/language.md, "States as
-// tables"): far beyond any planning state, and checked before anything is allocated, so a count
-// such as 3000000000 is a located error rather than an exhausted memory.
-constexpr std::uint64_t kMaxTableParts = 10'000'000;
-
-// A table being read: the state, its schema, and where errors go.
+// A table being read: the state, its schema, and where errors go. The parts and variables it
+// may declare in all (LoadOptions::max_table_parts) are checked before anything is allocated, so a
+// count such as 3000000000 is a located error rather than an exhausted memory.
 struct Table {
     ACSet& x;
     const Schema& s;
     const InferredKinds* inferred;
     DiagnosticSink& sink;
+    std::uint64_t max_parts;
     std::uint64_t declared = 0; // parts and variables so far
 };
 
@@ -209,12 +207,11 @@ std::vector<const Expr*> read_counts(Table& t, const MacroCall& form) {
             continue;
         }
         auto count = static_cast<std::uint64_t>(rhs.int_value);
-        if (count > kMaxTableParts - t.declared) {
-            t.sink.error(rhs.range,
-                         fmt::format("too many parts: '{} = {}' would give this @acset "
-                                     "{} parts and variables, but at most {} are "
-                                     "allowed",
-                                     lhs.text, count, t.declared + count, kMaxTableParts));
+        if (count > t.max_parts - t.declared) {
+            t.sink.error(rhs.range, fmt::format("too many parts: '{} = {}' would give this @acset "
+                                                "{} parts and variables, but at most {} are "
+                                                "allowed",
+                                                lhs.text, count, t.declared + count, t.max_parts));
             over_limit = true;
             continue;
         }
@@ -318,7 +315,7 @@ std::optional<ACSet> build_literal(Elaborator& ctx, const MacroCall& form,
                                    const std::shared_ptr<Schema>& s) {
     std::size_t errors = ctx.sink.num_errors();
     ACSet x(s);
-    Table t{x, *s, ctx.inferred_kinds(*s), ctx.sink};
+    Table t{x, *s, ctx.inferred_kinds(*s), ctx.sink, ctx.options.max_table_parts};
     for (const Expr* st : read_counts(t, form)) {
         read_column(t, *st);
     }

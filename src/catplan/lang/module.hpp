@@ -109,6 +109,9 @@ private:
 struct LoadOptions {
     /// A free instance that needs more new (unnamed) parts than this is reported as infinite.
     std::size_t max_fresh_parts = 100000;
+    /// The most parts and variables an @acset may declare in all (docs/language.md, "States as
+    /// tables"): far beyond any planning state, and checked before anything is allocated.
+    std::uint64_t max_table_parts = 10'000'000;
 };
 
 /// Parses and elaborates a file and its imports (a `.pddl` file: the domain it declares, as an

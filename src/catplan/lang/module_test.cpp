@@ -155,6 +155,21 @@ TEST(LiteralInstance, CountsStopAtTenMillionPartsAndVariablesInAll) {
     EXPECT_EQ(l.module.find("Huge"), nullptr);
 }
 
+TEST(LiteralInstance, TheLimitOnPartsIsALoadOption) {
+    LoadOptions small;
+    small.max_table_parts = 100;
+    Loaded l("@present G(FreeSchema) begin\n  V::Ob\n  W::AttrType(Int)\nend\n"
+             "@acset AtTheLimit(G) begin\n  V = 99\n  W = 1\nend\n"
+             "@acset OneMore(G) begin\n  V = 100\n  W = 1\nend\n",
+             small);
+    ASSERT_EQ(l.sink.num_errors(), 1u) << l.sink.render();
+    EXPECT_NE(l.sink.render().find("test.cp:11:7: error: too many parts: 'W = 1' would give this "
+                                   "@acset 101 parts and variables, but at most 100 are allowed"),
+              std::string::npos)
+        << l.sink.render();
+    EXPECT_EQ(l.instance("AtTheLimit").num_parts(ob(l.instance("AtTheLimit"), "V")), 99u);
+}
+
 TEST(ColorBlocksworld, InitialStateMatchesThePaper) {
     SourceManager sources;
     DiagnosticSink sink(sources);
