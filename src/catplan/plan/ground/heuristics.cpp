@@ -53,103 +53,6 @@ private:
     const Task& task_;
 };
 
-// Propositions by cost, for a Dijkstra in which costs only grow while popping: buckets for small
-// costs (Dial's algorithm), a binary heap for the rare large ones (h_add's sums).
-class AdaptiveQueue {
-public:
-    void clear() {
-        for (std::size_t i = 0; i < used_; ++i) {
-            buckets_[i].clear();
-        }
-        heap_.clear();
-        current_ = used_ = size_ = 0;
-    }
-
-    void push(int cost, Prop p) {
-        auto c = static_cast<std::size_t>(cost);
-        if (c < buckets_.size()) [[likely]] {
-            buckets_[c].push_back(p);
-            used_ = std::max(used_, c + 1);
-            current_ = std::min(current_, c);
-            ++size_;
-        } else {
-            push_slow(cost, p);
-        }
-    }
-
-    bool empty() const { return size_ == 0; }
-
-    std::pair<int, Prop> pop() {
-        --size_;
-        while (current_ < used_ && buckets_[current_].empty()) {
-            ++current_;
-        }
-        if (current_ < used_) {
-            Prop p = buckets_[current_].back();
-            buckets_[current_].pop_back();
-            return {static_cast<int>(current_), p};
-        }
-        std::pop_heap(heap_.begin(), heap_.end(), std::greater<>());
-        auto top = heap_.back();
-        heap_.pop_back();
-        return top;
-    }
-
-private:
-    [[gnu::noinline]] void push_slow(int cost, Prop p) {
-        auto c = static_cast<std::size_t>(cost);
-        if (c < kBuckets) {
-            buckets_.resize(std::min(kBuckets, 2 * c + 16));
-            push(cost, p);
-            return;
-        }
-        heap_.push_back({cost, p});
-        std::push_heap(heap_.begin(), heap_.end(), std::greater<>());
-        ++size_;
-    }
-
-    static constexpr std::size_t kBuckets = 1 << 14;
-    std::vector<std::vector<Prop>> buckets_;
-    std::vector<std::pair<int, Prop>> heap_;
-    std::size_t current_ = 0, used_ = 0, size_ = 0;
-};
-
-// The relaxed task's actions in flat arrays (offsets into one array of propositions each), so
-// that the exploration, which touches every reachable action per state, reads memory in order.
-struct FlatRelaxation {
-    explicit FlatRelaxation(const RelaxedTask& r) {
-        const auto& actions = r.actions();
-        add_begin.reserve(actions.size() + 1);
-        for (const auto& a : actions) {
-            add_begin.push_back(static_cast<std::uint32_t>(adds.size()));
-            adds.insert(adds.end(), a.add.begin(), a.add.end());
-            cost.push_back(a.cost);
-            num_pre.push_back(static_cast<std::uint32_t>(a.pre.size()));
-        }
-        add_begin.push_back(static_cast<std::uint32_t>(adds.size()));
-        pre_of_begin.reserve(r.num_props() + 1);
-        for (Prop p = 0; p < r.num_props(); ++p) {
-            pre_of_begin.push_back(static_cast<std::uint32_t>(pre_of.size()));
-            pre_of.insert(pre_of.end(), r.pre_of(p).begin(), r.pre_of(p).end());
-        }
-        pre_of_begin.push_back(static_cast<std::uint32_t>(pre_of.size()));
-        is_goal.assign(r.num_props(), 0);
-        for (Prop g : r.goal()) {
-            is_goal[g] = 1;
-        }
-        needed.assign(r.num_props(), 0);
-        for (Prop p = 0; p < r.num_props(); ++p) {
-            needed[p] = is_goal[p] != 0 || pre_of_begin[p] != pre_of_begin[p + 1] ? 1 : 0;
-        }
-    }
-
-    std::vector<std::uint32_t> add_begin, pre_of_begin, num_pre, pre_of;
-    std::vector<Prop> adds;
-    std::vector<int> cost;
-    std::vector<char> is_goal;
-    std::vector<char> needed; // a goal or a precondition (an absent atom is neither)
-};
-
 // h_add, h_max and h_FF: a generalised Dijkstra over the propositions from the state's, stopped
 // when every goal proposition has its final cost (as Fast Downward's relaxation heuristics).
 class Relaxation final : public Evaluator {
@@ -223,8 +126,8 @@ private:
             if (flat_.is_goal[p]) {
                 --open_goals; // the goals are distinct and each pops once at its final cost
             }
-            const std::uint32_t* it = flat_.pre_of.data() + flat_.pre_of_begin[p];
-            const std::uint32_t* end = flat_.pre_of.data() + flat_.pre_of_begin[p + 1];
+            const std::uint32_t* it = flat_.pre_ofs.data() + flat_.pre_of_begin[p];
+            const std::uint32_t* end = flat_.pre_ofs.data() + flat_.pre_of_begin[p + 1];
             for (; it != end; ++it) {
                 std::uint32_t a = *it;
                 acc_[a] = Max ? std::max(acc_[a], c) : std::min(acc_[a] + c, kDeadEnd);

@@ -7,7 +7,6 @@
 
 #include <algorithm>
 #include <limits>
-#include <queue>
 #include <tuple>
 
 namespace catplan::plan::ground {
@@ -18,15 +17,11 @@ constexpr int kInf = std::numeric_limits<int>::max();
 
 class LmCut final : public Evaluator {
 public:
-    LmCut(const RelaxedTask& r, Budget& budget) : r_(r), budget_(budget) {}
+    LmCut(const RelaxedTask& r, Budget& budget) : r_(r), flat_(r), budget_(budget) {}
 
     int evaluate(StateId, const std::vector<std::uint32_t>& state, const std::vector<ActionId>*,
                  std::vector<ActionId>*) override {
-        const auto& actions = r_.actions();
-        cost_.resize(actions.size());
-        for (std::uint32_t a = 0; a < actions.size(); ++a) {
-            cost_[a] = actions[a].cost;
-        }
+        cost_.assign(flat_.cost.begin(), flat_.cost.end());
         r_.props_of(state, init_);
         hmax();
         int h = 0;
@@ -59,17 +54,15 @@ private:
     // h_max under the current costs, with each action's supporter (its precondition of largest
     // value; kNone for an action with none).
     void hmax() {
-        const auto& actions = r_.actions();
+        const std::size_t num_actions = flat_.cost.size();
         value_.assign(r_.num_props(), kInf);
-        unsat_.resize(actions.size());
-        acc_.assign(actions.size(), 0);
-        supporter_.assign(actions.size(), kNone);
+        queue_.clear();
+        unsat_.assign(flat_.num_pre.begin(), flat_.num_pre.end());
+        acc_.assign(num_actions, 0);
+        supporter_.assign(num_actions, kNone);
         for (Prop p : init_) {
             value_[p] = 0;
-            queue_.push({0, p});
-        }
-        for (std::uint32_t a = 0; a < actions.size(); ++a) {
-            unsat_[a] = static_cast<std::uint32_t>(actions[a].pre.size());
+            queue_.push(0, p);
         }
         for (std::uint32_t a : r_.unconditional()) {
             lower_effects(a, cost_[a]);
@@ -77,7 +70,7 @@ private:
         int c = 0;
         Prop p = 0;
         while (pop(c, p)) {
-            for (std::uint32_t a : r_.pre_of(p)) {
+            for (std::uint32_t a : flat_.pre_of(p)) {
                 if (c >= acc_[a]) {
                     acc_[a] = c;
                     supporter_[a] = p; // the last precondition reached has the largest value
@@ -95,19 +88,18 @@ private:
     // preconditions again (it may now be another one). Much cheaper than hmax() from scratch,
     // since a cut is small; the values are the same, a supporter among equals may differ.
     void hmax_after_cut() {
-        const auto& actions = r_.actions();
         for (std::uint32_t a : cut_) {
             lower_effects(a, acc_[a] + cost_[a]);
         }
         int c = 0;
         Prop p = 0;
         while (pop(c, p)) {
-            for (std::uint32_t a : r_.pre_of(p)) {
+            for (std::uint32_t a : flat_.pre_of(p)) {
                 if (supporter_[a] != p || unsat_[a] != 0 || acc_[a] <= c) {
                     continue;
                 }
                 Prop best = p;
-                for (Prop q : actions[a].pre) {
+                for (Prop q : flat_.pre(a)) {
                     best = value_[q] > value_[best] ? q : best;
                 }
                 supporter_[a] = best;
@@ -122,8 +114,7 @@ private:
     // The next proposition of the queue whose value is still the one it was queued with.
     bool pop(int& c, Prop& p) {
         while (!queue_.empty()) {
-            std::tie(c, p) = queue_.top();
-            queue_.pop();
+            std::tie(c, p) = queue_.pop();
             if (c == value_[p]) {
                 return true;
             }
@@ -133,10 +124,10 @@ private:
 
     // Lowers the values of a's effects to c where c is less, queueing them.
     void lower_effects(std::uint32_t a, int c) {
-        for (Prop q : r_.actions()[a].add) {
+        for (Prop q : flat_.add(a)) {
             if (c < value_[q]) {
                 value_[q] = c;
-                queue_.push({c, q});
+                queue_.push(c, q);
             }
         }
     }
@@ -167,26 +158,25 @@ private:
     }
 
     // The actions that cross from the part reachable from the state (along supporters, outside
-    // the goal zone) into the goal zone; returns their least cost.
+    // the goal zone) into the goal zone; returns their least cost. An action is reached once at
+    // most, from its supporter: into the cut if an effect is in the goal zone, and its other
+    // effects are reached (they may lead to more of the cut).
     int cut() {
-        const auto& actions = r_.actions();
         cut_.clear();
         seen_.assign(r_.num_props(), 0);
-        in_cut_.assign(actions.size(), 0);
-        std::vector<Prop> stack;
-        // An action from the reached part: into the cut if an effect is in the goal zone; its
-        // other effects are reached (they may lead to more of the cut).
+        auto& stack = stack_;
         auto through = [&](std::uint32_t a) {
-            for (Prop q : actions[a].add) {
+            bool crosses = false;
+            for (Prop q : flat_.add(a)) {
                 if (zone_[q]) {
-                    if (!in_cut_[a]) {
-                        in_cut_[a] = 1;
-                        cut_.push_back(a);
-                    }
+                    crosses = true;
                 } else if (!seen_[q]) {
                     seen_[q] = 1;
                     stack.push_back(q);
                 }
+            }
+            if (crosses) {
+                cut_.push_back(a);
             }
         };
         for (Prop p : init_) {
@@ -201,7 +191,7 @@ private:
         while (!stack.empty()) {
             Prop p = stack.back();
             stack.pop_back();
-            for (std::uint32_t a : r_.pre_of(p)) {
+            for (std::uint32_t a : flat_.pre_of(p)) {
                 if (supporter_[a] == p && unsat_[a] == 0) {
                     through(a);
                 }
@@ -215,13 +205,14 @@ private:
     }
 
     const RelaxedTask& r_;
+    FlatRelaxation flat_;
     Budget& budget_;
     std::vector<int> cost_, value_, acc_;
     std::vector<std::uint32_t> unsat_, cut_;
     std::vector<Prop> supporter_, init_;
-    std::vector<char> zone_, seen_, in_cut_;
-    using Item = std::pair<int, Prop>;
-    std::priority_queue<Item, std::vector<Item>, std::greater<>> queue_;
+    std::vector<Prop> stack_;
+    std::vector<char> zone_, seen_;
+    AdaptiveQueue queue_;
 };
 
 } // namespace

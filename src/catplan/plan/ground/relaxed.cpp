@@ -166,4 +166,34 @@ void RelaxedTask::props_of(const std::vector<std::uint32_t>& state, std::vector<
     }
 }
 
+FlatRelaxation::FlatRelaxation(const RelaxedTask& r) {
+    const auto& actions = r.actions();
+    pre_begin.reserve(actions.size() + 1);
+    add_begin.reserve(actions.size() + 1);
+    for (const auto& a : actions) {
+        pre_begin.push_back(static_cast<std::uint32_t>(pres.size()));
+        pres.insert(pres.end(), a.pre.begin(), a.pre.end());
+        add_begin.push_back(static_cast<std::uint32_t>(adds.size()));
+        adds.insert(adds.end(), a.add.begin(), a.add.end());
+        cost.push_back(a.cost);
+        num_pre.push_back(static_cast<std::uint32_t>(a.pre.size()));
+    }
+    pre_begin.push_back(static_cast<std::uint32_t>(pres.size()));
+    add_begin.push_back(static_cast<std::uint32_t>(adds.size()));
+    pre_of_begin.reserve(r.num_props() + 1);
+    for (Prop p = 0; p < r.num_props(); ++p) {
+        pre_of_begin.push_back(static_cast<std::uint32_t>(pre_ofs.size()));
+        pre_ofs.insert(pre_ofs.end(), r.pre_of(p).begin(), r.pre_of(p).end());
+    }
+    pre_of_begin.push_back(static_cast<std::uint32_t>(pre_ofs.size()));
+    is_goal.assign(r.num_props(), 0);
+    for (Prop g : r.goal()) {
+        is_goal[g] = 1;
+    }
+    needed.assign(r.num_props(), 0);
+    for (Prop p = 0; p < r.num_props(); ++p) {
+        needed[p] = is_goal[p] != 0 || pre_of_begin[p] != pre_of_begin[p + 1] ? 1 : 0;
+    }
+}
+
 } // namespace catplan::plan::ground

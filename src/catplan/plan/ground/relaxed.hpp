@@ -12,7 +12,9 @@
 
 #include "catplan/plan/ground/task.hpp"
 
+#include <algorithm>
 #include <span>
+#include <utility>
 #include <vector>
 
 namespace catplan::plan::ground {
@@ -79,6 +81,94 @@ private:
     std::vector<std::uint32_t> achievers_begin_, achievers_; // per proposition, in one array
     std::vector<Prop> goal_;
     std::vector<std::uint32_t> relaxed_of_;
+};
+
+/// Propositions by cost, least first, for the explorations' Dijkstras: buckets for small costs
+/// (Dial's algorithm; of equal costs the one pushed last pops first, as in Fast Downward's
+/// queue), a binary heap for the rare large ones (h_add's sums).
+class AdaptiveQueue {
+public:
+    void clear() {
+        for (std::size_t i = 0; i < used_; ++i) {
+            buckets_[i].clear();
+        }
+        heap_.clear();
+        current_ = used_ = size_ = 0;
+    }
+
+    void push(int cost, Prop p) {
+        auto c = static_cast<std::size_t>(cost);
+        if (c < buckets_.size()) [[likely]] {
+            buckets_[c].push_back(p);
+            used_ = std::max(used_, c + 1);
+            current_ = std::min(current_, c);
+            ++size_;
+        } else {
+            push_slow(cost, p);
+        }
+    }
+
+    bool empty() const { return size_ == 0; }
+
+    std::pair<int, Prop> pop() {
+        --size_;
+        while (current_ < used_ && buckets_[current_].empty()) {
+            ++current_;
+        }
+        if (current_ < used_) {
+            Prop p = buckets_[current_].back();
+            buckets_[current_].pop_back();
+            return {static_cast<int>(current_), p};
+        }
+        std::pop_heap(heap_.begin(), heap_.end(), std::greater<>());
+        auto top = heap_.back();
+        heap_.pop_back();
+        return top;
+    }
+
+private:
+    [[gnu::noinline]] void push_slow(int cost, Prop p) {
+        auto c = static_cast<std::size_t>(cost);
+        if (c < kBuckets) {
+            buckets_.resize(std::min(kBuckets, 2 * c + 16));
+            push(cost, p);
+            return;
+        }
+        heap_.push_back({cost, p});
+        std::push_heap(heap_.begin(), heap_.end(), std::greater<>());
+        ++size_;
+    }
+
+    static constexpr std::size_t kBuckets = 1 << 14;
+    std::vector<std::vector<Prop>> buckets_;
+    std::vector<std::pair<int, Prop>> heap_;
+    std::size_t current_ = 0, used_ = 0, size_ = 0;
+};
+
+/// A relaxed task's actions in flat arrays (offsets into one array of propositions each), for the
+/// explorations that touch every reachable action per state (h_add, h_max, h_FF, LM-cut): they
+/// read memory in order.
+struct FlatRelaxation {
+    explicit FlatRelaxation(const RelaxedTask& r);
+
+    std::span<const Prop> pre(std::uint32_t a) const {
+        return {pres.data() + pre_begin[a], pres.data() + pre_begin[a + 1]};
+    }
+
+    std::span<const Prop> add(std::uint32_t a) const {
+        return {adds.data() + add_begin[a], adds.data() + add_begin[a + 1]};
+    }
+
+    /// The actions with proposition p as a precondition.
+    std::span<const std::uint32_t> pre_of(Prop p) const {
+        return {pre_ofs.data() + pre_of_begin[p], pre_ofs.data() + pre_of_begin[p + 1]};
+    }
+
+    std::vector<std::uint32_t> pre_begin, add_begin, pre_of_begin, num_pre, pre_ofs;
+    std::vector<Prop> pres, adds;
+    std::vector<int> cost;
+    std::vector<char> is_goal;
+    std::vector<char> needed; // a goal or a precondition (an absent atom is neither)
 };
 
 } // namespace catplan::plan::ground
