@@ -212,7 +212,7 @@ private:
     std::vector<Prop> supporter_, init_;
     std::vector<Prop> stack_;
     std::vector<char> zone_, seen_;
-    AdaptiveQueue queue_;
+    AdaptiveQueue queue_{AdaptiveQueue::Ties::LeastProposition};
 };
 
 } // namespace

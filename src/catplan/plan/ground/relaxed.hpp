@@ -13,6 +13,8 @@
 #include "catplan/plan/ground/task.hpp"
 
 #include <algorithm>
+#include <cstdint>
+#include <functional>
 #include <span>
 #include <utility>
 #include <vector>
@@ -84,10 +86,15 @@ private:
 };
 
 /// Propositions by cost, least first, for the explorations' Dijkstras: buckets for small costs
-/// (Dial's algorithm; of equal costs the one pushed last pops first, as in Fast Downward's
-/// queue), a binary heap for the rare large ones (h_add's sums).
+/// (Dial's algorithm), a binary heap for the rare large ones (h_add's sums). Of equal costs, the
+/// proposition pushed last pops first (Fast Downward's order), or with Ties::LeastProposition the
+/// least proposition (each bucket a heap), which decides LM-cut's supporters among equals.
 class AdaptiveQueue {
 public:
+    enum class Ties : std::uint8_t { LastPushed, LeastProposition };
+
+    explicit AdaptiveQueue(Ties ties = Ties::LastPushed) : ties_(ties) {}
+
     void clear() {
         for (std::size_t i = 0; i < used_; ++i) {
             buckets_[i].clear();
@@ -100,6 +107,9 @@ public:
         auto c = static_cast<std::size_t>(cost);
         if (c < buckets_.size()) [[likely]] {
             buckets_[c].push_back(p);
+            if (ties_ == Ties::LeastProposition) {
+                std::push_heap(buckets_[c].begin(), buckets_[c].end(), std::greater<>());
+            }
             used_ = std::max(used_, c + 1);
             current_ = std::min(current_, c);
             ++size_;
@@ -116,8 +126,12 @@ public:
             ++current_;
         }
         if (current_ < used_) {
-            Prop p = buckets_[current_].back();
-            buckets_[current_].pop_back();
+            auto& bucket = buckets_[current_];
+            if (ties_ == Ties::LeastProposition) {
+                std::pop_heap(bucket.begin(), bucket.end(), std::greater<>());
+            }
+            Prop p = bucket.back();
+            bucket.pop_back();
             return {static_cast<int>(current_), p};
         }
         std::pop_heap(heap_.begin(), heap_.end(), std::greater<>());
@@ -140,6 +154,7 @@ private:
     }
 
     static constexpr std::size_t kBuckets = 1 << 14;
+    Ties ties_;
     std::vector<std::vector<Prop>> buckets_;
     std::vector<std::pair<int, Prop>> heap_;
     std::size_t current_ = 0, used_ = 0, size_ = 0;

@@ -28,6 +28,18 @@ TEST(AdaptiveQueue, LeastCostFirstAndOfEqualCostsThePropositionPushedLast) {
     EXPECT_EQ(drain(q), (Popped{{0, 2}, {0, 1}, {1, 4}, {2, 8}, {2, 7}}));
 }
 
+TEST(AdaptiveQueue, WithLeastPropositionTiesEqualCostsPopByProposition) {
+    AdaptiveQueue q(AdaptiveQueue::Ties::LeastProposition);
+    q.push(2, 7);
+    q.push(0, 5);
+    q.push(2, 3);
+    q.push(0, 1);
+    q.push(2, 9);
+    EXPECT_EQ(q.pop(), (std::pair<int, Prop>{0, 1}));
+    q.push(0, 2); // pushed while its bucket is popped
+    EXPECT_EQ(drain(q), (Popped{{0, 2}, {0, 5}, {2, 3}, {2, 7}, {2, 9}}));
+}
+
 // LM-cut lowers values after a cut: a cost below the last one popped comes out next.
 TEST(AdaptiveQueue, ACostBelowTheLastPoppedComesOutNext) {
     AdaptiveQueue q;
