@@ -142,7 +142,8 @@ private:
                 seed = g;
             }
         }
-        std::vector<Prop> stack{seed};
+        auto& stack = stack_; // empty: cut() and this loop leave it so
+        stack.push_back(seed);
         zone_[seed] = 1;
         while (!stack.empty()) {
             Prop p = stack.back();
