@@ -142,8 +142,8 @@ private:
                 seed = g;
             }
         }
-        auto& stack = stack_; // empty: cut() and this loop leave it so
-        stack.push_back(seed);
+        auto& stack = stack_;
+        stack.assign(1, seed);
         zone_[seed] = 1;
         while (!stack.empty()) {
             Prop p = stack.back();
@@ -166,6 +166,7 @@ private:
         cut_.clear();
         seen_.assign(r_.num_props(), 0);
         auto& stack = stack_;
+        stack.clear();
         auto through = [&](std::uint32_t a) {
             bool crosses = false;
             for (Prop q : flat_.add(a)) {
