@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <fmt/format.h>
 #include <functional>
 #include <limits>
@@ -150,6 +151,62 @@ TEST(GroundHeuristics, LmCutIsAtLeastHMaxOnRandomWalks) {
     EXPECT_GT(states, 100);
 }
 
+// Each index of the flat relaxation agrees with the actions' own lists: pre_of and achievers
+// invert pre and add, every ground action but an exit has its relaxed action, and the goal
+// actions (the case study's goal has two terms) come last and add the one goal proposition.
+TEST(RelaxedTask, IndexesInvertEachActionsLists) {
+    for (const auto& p : {paper_case_study(), random_blocks_problem(6, 7)}) {
+        Task t = compiled(p);
+        RelaxedTask r(t);
+        std::size_t pres = 0, adds = 0, goal_actions = 0;
+        std::vector<std::uint32_t> unconditional;
+        for (std::uint32_t a = 0; a < r.num_actions(); ++a) {
+            auto pre = r.pre(a);
+            EXPECT_TRUE(std::is_sorted(pre.begin(), pre.end()));
+            EXPECT_EQ(std::adjacent_find(pre.begin(), pre.end()), pre.end());
+            EXPECT_EQ(r.num_pres()[a], pre.size());
+            for (Prop q : pre) {
+                auto users = r.pre_of(q);
+                EXPECT_EQ(std::count(users.begin(), users.end(), a), 1);
+                EXPECT_TRUE(r.needed(q));
+            }
+            for (Prop q : r.add(a)) {
+                auto ach = r.achievers(q);
+                EXPECT_TRUE(std::find(ach.begin(), ach.end(), a) != ach.end());
+            }
+            pres += pre.size();
+            adds += r.add(a).size();
+            if (pre.empty()) {
+                unconditional.push_back(a);
+            }
+            if (r.action(a) == kNone) {
+                ++goal_actions;
+                EXPECT_EQ(r.cost(a), 0);
+                EXPECT_EQ(std::vector<Prop>(r.add(a).begin(), r.add(a).end()), r.goal());
+                continue;
+            }
+            EXPECT_EQ(goal_actions, 0u) << "a ground action after a goal action";
+            EXPECT_EQ(r.relaxed_of(r.action(a)), a);
+            for (ActionId b : r.also(a)) {
+                EXPECT_EQ(r.relaxed_of(b), a);
+            }
+        }
+        std::size_t in_pre_of = 0, in_achievers = 0;
+        for (Prop q = 0; q < r.num_props(); ++q) {
+            in_pre_of += r.pre_of(q).size();
+            in_achievers += r.achievers(q).size();
+            EXPECT_EQ(r.needed(q), r.is_goal(q) || !r.pre_of(q).empty());
+        }
+        EXPECT_EQ(in_pre_of, pres);
+        EXPECT_EQ(in_achievers, adds);
+        EXPECT_EQ(r.unconditional(), unconditional);
+        EXPECT_EQ(goal_actions, t.goal.size() == 1 ? 0u : t.goal.size());
+        for (ActionId a = 0; a < t.actions.size(); ++a) {
+            EXPECT_EQ(r.relaxed_of(a) == kNone, !t.actions[a].exit.empty()) << t.describe_action(a);
+        }
+    }
+}
+
 std::set<std::set<std::string>> described_groups(const Task& t) {
     std::set<std::set<std::string>> out;
     for (const auto& g : t.mutex_groups) {
@@ -268,9 +325,9 @@ int reference(const RelaxedTask& r, const std::vector<std::uint32_t>& state, boo
     }
     for (bool changed = true; changed;) {
         changed = false;
-        for (const auto& a : r.actions()) {
+        for (std::uint32_t a = 0; a < r.num_actions(); ++a) {
             int c = 0;
-            for (Prop q : a.pre) {
+            for (Prop q : r.pre(a)) {
                 if (cost[q] == kInf) {
                     c = kInf;
                     break;
@@ -280,9 +337,9 @@ int reference(const RelaxedTask& r, const std::vector<std::uint32_t>& state, boo
             if (c == kInf) {
                 continue;
             }
-            for (Prop q : a.add) {
-                if (c + a.cost < cost[q]) {
-                    cost[q] = c + a.cost;
+            for (Prop q : r.add(a)) {
+                if (c + r.cost(a) < cost[q]) {
+                    cost[q] = c + r.cost(a);
                     changed = true;
                 }
             }

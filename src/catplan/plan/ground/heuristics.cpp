@@ -60,7 +60,7 @@ public:
     enum class Mode { Add, Max, FF };
 
     Relaxation(const RelaxedTask& r, Mode mode, Budget& budget)
-        : r_(r), flat_(r), mode_(mode), budget_(budget) {
+        : r_(r), mode_(mode), budget_(budget) {
         goals_.assign(r.goal().begin(), r.goal().end());
         std::sort(goals_.begin(), goals_.end());
         goals_.erase(std::unique(goals_.begin(), goals_.end()), goals_.end());
@@ -86,16 +86,15 @@ public:
 
 private:
     void explore(const std::vector<std::uint32_t>& state) {
-        const std::size_t num_actions = flat_.cost.size();
         cost_.assign(r_.num_props(), kInf);
         supporter_.assign(r_.num_props(), kNone);
-        unsat_.assign(flat_.num_pre.begin(), flat_.num_pre.end());
-        acc_.assign(num_actions, 0);
+        unsat_.assign(r_.num_pres().begin(), r_.num_pres().end());
+        acc_.assign(r_.num_actions(), 0);
         queue_.clear();
         r_.props_of(state, init_);
         for (Prop p : init_) {
             cost_[p] = 0;
-            if (flat_.needed[p] != 0) {
+            if (r_.needed(p)) {
                 queue_.push(0, p); // popping it would fire nothing
             }
         }
@@ -123,13 +122,10 @@ private:
             if ((++pops & 1023) == 0) {
                 budget_.poll(); // the clock is read every 64th poll: per 65,536 propositions
             }
-            if (flat_.is_goal[p]) {
+            if (r_.is_goal(p)) {
                 --open_goals; // the goals are distinct and each pops once at its final cost
             }
-            const std::uint32_t* it = flat_.pre_ofs.data() + flat_.pre_of_begin[p];
-            const std::uint32_t* end = flat_.pre_ofs.data() + flat_.pre_of_begin[p + 1];
-            for (; it != end; ++it) {
-                std::uint32_t a = *it;
+            for (std::uint32_t a : r_.pre_of(p)) {
                 acc_[a] = Max ? std::max(acc_[a], c) : std::min(acc_[a] + c, kDeadEnd);
                 if (--unsat_[a] == 0) {
                     fire(a);
@@ -139,11 +135,8 @@ private:
     }
 
     void fire(std::uint32_t a) {
-        int c = flat_.cost[a] + acc_[a];
-        const Prop* it = flat_.adds.data() + flat_.add_begin[a];
-        const Prop* end = flat_.adds.data() + flat_.add_begin[a + 1];
-        for (; it != end; ++it) {
-            Prop q = *it;
+        int c = r_.cost(a) + acc_[a];
+        for (Prop q : r_.add(a)) {
             if (c < cost_[q]) {
                 cost_[q] = c;
                 supporter_[q] = a;
@@ -156,8 +149,7 @@ private:
     // applicable now are preferred. Every proposition it visits costs at most the goal's, so its
     // cost and supporter are final.
     int relaxed_plan(std::vector<ActionId>* preferred) {
-        const auto& actions = r_.actions();
-        in_plan_.assign(actions.size(), 0);
+        in_plan_.assign(r_.num_actions(), 0);
         marked_.assign(r_.num_props(), 0);
         mark_goal_side_effects();
         stack_.assign(goals_.begin(), goals_.end());
@@ -174,15 +166,15 @@ private:
                 continue;
             }
             in_plan_[a] = 1;
-            h += actions[a].cost;
+            h += r_.cost(a);
             bool applicable = true;
-            for (Prop q : actions[a].pre) {
+            for (Prop q : r_.pre(a)) {
                 stack_.push_back(q);
                 applicable = applicable && cost_[q] == 0;
             }
-            if (preferred != nullptr && applicable && actions[a].action != kNone) {
-                preferred->push_back(actions[a].action);
-                preferred->insert(preferred->end(), actions[a].also.begin(), actions[a].also.end());
+            if (preferred != nullptr && applicable && r_.action(a) != kNone) {
+                preferred->push_back(r_.action(a));
+                preferred->insert(preferred->end(), r_.also(a).begin(), r_.also(a).end());
             }
         }
         return std::min(h, kDeadEnd - 1);
@@ -190,7 +182,7 @@ private:
 
     // Whether action b adds p at p's cost (p's supporter does; others may tie with it).
     bool least_achiever(std::uint32_t b, Prop p) const {
-        return unsat_[b] == 0 && flat_.cost[b] != 0 && flat_.cost[b] + acc_[b] == cost_[p];
+        return unsat_[b] == 0 && r_.cost(b) != 0 && r_.cost(b) + acc_[b] == cost_[p];
     }
 
     // The propositions that the supporters of the goal's propositions add at their own cost:
@@ -199,11 +191,10 @@ private:
         by_goal_.assign(r_.num_props(), 0);
         for (Prop g : goals_) {
             std::uint32_t a = supporter_[g];
-            if (cost_[g] == 0 || flat_.cost[a] == 0) {
+            if (cost_[g] == 0 || r_.cost(a) == 0) {
                 continue;
             }
-            for (std::uint32_t k = flat_.add_begin[a]; k < flat_.add_begin[a + 1]; ++k) {
-                Prop q = flat_.adds[k];
+            for (Prop q : r_.add(a)) {
                 by_goal_[q] = by_goal_[q] != 0 || least_achiever(a, q) ? 1 : 0;
             }
         }
@@ -212,7 +203,7 @@ private:
     // The preconditions of action a that the state lacks and no goal supporter adds.
     int new_needs(std::uint32_t a) const {
         int n = 0;
-        for (Prop q : r_.actions()[a].pre) {
+        for (Prop q : r_.pre(a)) {
             n += cost_[q] != 0 && by_goal_[q] == 0 ? 1 : 0;
         }
         return n;
@@ -244,7 +235,6 @@ private:
     }
 
     const RelaxedTask& r_;
-    FlatRelaxation flat_;
     Mode mode_;
     Budget& budget_;
     std::vector<Prop> goals_;

@@ -91,18 +91,14 @@ private:
 
     // The propositions reachable in the relaxation without the actions that add one of `props`.
     void reachable_without(const std::vector<Prop>& props) {
-        const auto& actions = r_.actions();
         reached_.assign(r_.num_props(), 0);
-        banned_.assign(actions.size(), 0);
+        banned_.assign(r_.num_actions(), 0);
         for (Prop p : props) {
             for (std::uint32_t a : r_.achievers(p)) {
                 banned_[a] = 1;
             }
         }
-        unsat_.resize(actions.size());
-        for (std::uint32_t a = 0; a < actions.size(); ++a) {
-            unsat_[a] = static_cast<std::uint32_t>(actions[a].pre.size());
-        }
+        unsat_.assign(r_.num_pres().begin(), r_.num_pres().end());
         std::vector<Prop> stack;
         auto reach = [&](Prop p) {
             if (!reached_[p]) {
@@ -117,7 +113,7 @@ private:
         }
         for (std::uint32_t a : r_.unconditional()) {
             if (!banned_[a]) {
-                for (Prop q : actions[a].add) {
+                for (Prop q : r_.add(a)) {
                     reach(q);
                 }
             }
@@ -127,7 +123,7 @@ private:
             stack.pop_back();
             for (std::uint32_t a : r_.pre_of(p)) {
                 if (--unsat_[a] == 0 && !banned_[a]) {
-                    for (Prop q : actions[a].add) {
+                    for (Prop q : r_.add(a)) {
                         reach(q);
                     }
                 }
@@ -139,11 +135,10 @@ private:
     // `child` (kNone: the goal proposition), and so do variables they all need.
     void back_chain(const std::vector<Prop>& props, std::uint32_t child, bool goal) {
         reachable_without(props);
-        const auto& actions = r_.actions();
         std::vector<std::uint32_t> first;
         for (Prop p : props) {
             for (std::uint32_t a : r_.achievers(p)) {
-                const auto& pre = actions[a].pre;
+                auto pre = r_.pre(a);
                 if (std::all_of(pre.begin(), pre.end(), [&](Prop q) { return reached_[q] != 0; })) {
                     first.push_back(a);
                 }
@@ -157,7 +152,7 @@ private:
         // Per variable: the values the first achievers need, and how many need it at all.
         std::map<VarId, std::pair<std::size_t, std::vector<std::uint32_t>>> need;
         for (std::uint32_t a : first) {
-            for (Prop q : actions[a].pre) {
+            for (Prop q : r_.pre(a)) {
                 Fact f = r_.fact(q);
                 if (f.var == kNone) {
                     continue;
@@ -222,7 +217,7 @@ private:
 
         std::map<std::uint32_t, Class> classes; // by the atoms' object
         for (std::size_t i = 0; i < first.size(); ++i) {
-            for (Prop q : r_.actions()[first[i]].pre) {
+            for (Prop q : r_.pre(first[i])) {
                 Fact f = r_.fact(q);
                 if (f.var == kNone || f.value != 1 ||
                     task_.vars[f.var].kind != Variable::Kind::Atom ||
@@ -383,17 +378,17 @@ private:
                 continue;
             }
             for (std::uint32_t ra : lms_[i].achievers) {
-                const auto& act = r_.actions()[ra];
-                if (act.action == kNone) {
+                if (r_.action(ra) == kNone) {
                     continue;
                 }
-                bool ok = std::all_of(act.pre.begin(), act.pre.end(), [&](Prop q) {
+                auto pre = r_.pre(ra);
+                bool ok = std::all_of(pre.begin(), pre.end(), [&](Prop q) {
                     Fact f = r_.fact(q);
                     return f.var != kNone && state[f.var] == f.value;
                 });
                 if (ok) {
-                    out.push_back(act.action);
-                    out.insert(out.end(), act.also.begin(), act.also.end());
+                    out.push_back(r_.action(ra));
+                    out.insert(out.end(), r_.also(ra).begin(), r_.also(ra).end());
                 }
             }
         }

@@ -17,11 +17,11 @@ constexpr int kInf = std::numeric_limits<int>::max();
 
 class LmCut final : public Evaluator {
 public:
-    LmCut(const RelaxedTask& r, Budget& budget) : r_(r), flat_(r), budget_(budget) {}
+    LmCut(const RelaxedTask& r, Budget& budget) : r_(r), budget_(budget) {}
 
     int evaluate(StateId, const std::vector<std::uint32_t>& state, const std::vector<ActionId>*,
                  std::vector<ActionId>*) override {
-        cost_.assign(flat_.cost.begin(), flat_.cost.end());
+        cost_.assign(r_.costs().begin(), r_.costs().end());
         r_.props_of(state, init_);
         hmax();
         int h = 0;
@@ -54,10 +54,10 @@ private:
     // h_max under the current costs, with each action's supporter (its precondition of largest
     // value; kNone for an action with none).
     void hmax() {
-        const std::size_t num_actions = flat_.cost.size();
+        const std::size_t num_actions = r_.num_actions();
         value_.assign(r_.num_props(), kInf);
         queue_.clear();
-        unsat_.assign(flat_.num_pre.begin(), flat_.num_pre.end());
+        unsat_.assign(r_.num_pres().begin(), r_.num_pres().end());
         acc_.assign(num_actions, 0);
         supporter_.assign(num_actions, kNone);
         for (Prop p : init_) {
@@ -70,7 +70,7 @@ private:
         int c = 0;
         Prop p = 0;
         while (pop(c, p)) {
-            for (std::uint32_t a : flat_.pre_of(p)) {
+            for (std::uint32_t a : r_.pre_of(p)) {
                 if (c >= acc_[a]) {
                     acc_[a] = c;
                     supporter_[a] = p; // the last precondition reached has the largest value
@@ -94,12 +94,12 @@ private:
         int c = 0;
         Prop p = 0;
         while (pop(c, p)) {
-            for (std::uint32_t a : flat_.pre_of(p)) {
+            for (std::uint32_t a : r_.pre_of(p)) {
                 if (supporter_[a] != p || unsat_[a] != 0 || acc_[a] <= c) {
                     continue;
                 }
                 Prop best = p;
-                for (Prop q : flat_.pre(a)) {
+                for (Prop q : r_.pre(a)) {
                     best = value_[q] > value_[best] ? q : best;
                 }
                 supporter_[a] = best;
@@ -124,7 +124,7 @@ private:
 
     // Lowers the values of a's effects to c where c is less, queueing them.
     void lower_effects(std::uint32_t a, int c) {
-        for (Prop q : flat_.add(a)) {
+        for (Prop q : r_.add(a)) {
             if (c < value_[q]) {
                 value_[q] = c;
                 queue_.push(c, q);
@@ -169,7 +169,7 @@ private:
         stack.clear();
         auto through = [&](std::uint32_t a) {
             bool crosses = false;
-            for (Prop q : flat_.add(a)) {
+            for (Prop q : r_.add(a)) {
                 if (zone_[q]) {
                     crosses = true;
                 } else if (!seen_[q]) {
@@ -193,7 +193,7 @@ private:
         while (!stack.empty()) {
             Prop p = stack.back();
             stack.pop_back();
-            for (std::uint32_t a : flat_.pre_of(p)) {
+            for (std::uint32_t a : r_.pre_of(p)) {
                 if (supporter_[a] == p && unsat_[a] == 0) {
                     through(a);
                 }
@@ -207,7 +207,6 @@ private:
     }
 
     const RelaxedTask& r_;
-    FlatRelaxation flat_;
     Budget& budget_;
     std::vector<int> cost_, value_, acc_;
     std::vector<std::uint32_t> unsat_, cut_;

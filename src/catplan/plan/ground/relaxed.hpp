@@ -28,19 +28,17 @@ using Prop = std::uint32_t;
 /// still lengthen a relaxed plan).
 enum class CostType : std::uint8_t { One, Normal, PlusOne };
 
-struct RelaxedAction {
-    std::vector<Prop> pre, add;
-    int cost = 1;
-    ActionId action = kNone;    // the ground action, or kNone for a goal action
-    std::vector<ActionId> also; // the ground actions it stands for besides `action`
-};
-
+/// A relaxed task in flat arrays (offsets into one array per kind): the explorations touch every
+/// reachable action per state (h_add, h_max, h_FF, LM-cut) and read memory in order. Relaxed
+/// actions are numbered from 0; the goal actions come last.
 class RelaxedTask {
 public:
     /// The relaxation of task, its actions costing as `costs` says.
     explicit RelaxedTask(const Task& task, CostType costs = CostType::One);
 
     std::uint32_t num_props() const { return num_props_; }
+
+    std::uint32_t num_actions() const { return static_cast<std::uint32_t>(cost_.size()); }
 
     Prop prop(Fact f) const { return offset_[f.var] + f.value; }
 
@@ -49,21 +47,45 @@ public:
     /// The fact a proposition stands for (the goal proposition has var kNone).
     Fact fact(Prop p) const;
 
-    const std::vector<RelaxedAction>& actions() const { return actions_; }
+    /// Relaxed action a's preconditions, sorted and distinct.
+    std::span<const Prop> pre(std::uint32_t a) const { return slice(pres_, pre_begin_, a); }
+
+    /// Relaxed action a's adds, sorted.
+    std::span<const Prop> add(std::uint32_t a) const { return slice(adds_, add_begin_, a); }
+
+    int cost(std::uint32_t a) const { return cost_[a]; }
+
+    /// Every relaxed action's cost, by action.
+    const std::vector<int>& costs() const { return cost_; }
+
+    /// Every relaxed action's number of preconditions, by action.
+    const std::vector<std::uint32_t>& num_pres() const { return num_pre_; }
+
+    /// The ground action relaxed action a stands for, or kNone for a goal action.
+    ActionId action(std::uint32_t a) const { return action_[a]; }
+
+    /// The ground actions relaxed action a stands for besides action(a) (dominated variants).
+    std::span<const ActionId> also(std::uint32_t a) const { return slice(alsos_, also_begin_, a); }
 
     /// The relaxed actions with proposition p as a precondition.
-    const std::vector<std::uint32_t>& pre_of(Prop p) const { return pre_of_[p]; }
+    std::span<const std::uint32_t> pre_of(Prop p) const {
+        return slice(pre_ofs_, pre_of_begin_, p);
+    }
 
-    /// The relaxed actions that add proposition p, in the order of actions().
+    /// The relaxed actions that add proposition p, in the order of their numbers.
     std::span<const std::uint32_t> achievers(Prop p) const {
-        return {achievers_.data() + achievers_begin_[p],
-                achievers_.data() + achievers_begin_[p + 1]};
+        return slice(achievers_, achievers_begin_, p);
     }
 
     /// The relaxed actions with no precondition.
     const std::vector<std::uint32_t>& unconditional() const { return unconditional_; }
 
     const std::vector<Prop>& goal() const { return goal_; }
+
+    bool is_goal(Prop p) const { return is_goal_[p] != 0; }
+
+    /// Whether p is a goal or a precondition (an absent atom is neither).
+    bool needed(Prop p) const { return needed_[p] != 0; }
 
     /// The propositions true in a state (a value per variable), sorted.
     void props_of(const std::vector<std::uint32_t>& state, std::vector<Prop>& out) const;
@@ -72,16 +94,31 @@ public:
     std::uint32_t relaxed_of(ActionId a) const { return relaxed_of_[a]; }
 
 private:
-    void drop_dominated(const Task& task);
-    void index_achievers();
+    struct Draft;
+
+    template <class T>
+    static std::span<const T> slice(const std::vector<T>& all,
+                                    const std::vector<std::uint32_t>& begin, std::uint32_t i) {
+        return {all.data() + begin[i], all.data() + begin[i + 1]};
+    }
+
+    std::vector<Draft> drafts(const Task& task, CostType costs) const;
+    static void drop_dominated(const Task& task, std::vector<Draft>& drafts);
+    void add_goal_actions(const Task& task, std::vector<Draft>& drafts);
+    void flatten(const std::vector<Draft>& drafts);
+    void index_by_proposition();
 
     std::vector<std::uint32_t> offset_;
     std::uint32_t num_props_ = 0, var_props_ = 0;
-    std::vector<RelaxedAction> actions_;
-    std::vector<std::vector<std::uint32_t>> pre_of_;
-    std::vector<std::uint32_t> unconditional_;
+    std::vector<std::uint32_t> pre_begin_, add_begin_, also_begin_, num_pre_;
+    std::vector<Prop> pres_, adds_;
+    std::vector<ActionId> alsos_, action_;
+    std::vector<int> cost_;
+    std::vector<std::uint32_t> pre_of_begin_, pre_ofs_;      // per proposition, in one array
     std::vector<std::uint32_t> achievers_begin_, achievers_; // per proposition, in one array
+    std::vector<std::uint32_t> unconditional_;
     std::vector<Prop> goal_;
+    std::vector<char> is_goal_, needed_;
     std::vector<std::uint32_t> relaxed_of_;
 };
 
@@ -158,32 +195,6 @@ private:
     std::vector<std::vector<Prop>> buckets_;
     std::vector<std::pair<int, Prop>> heap_;
     std::size_t current_ = 0, used_ = 0, size_ = 0;
-};
-
-/// A relaxed task's actions in flat arrays (offsets into one array of propositions each), for the
-/// explorations that touch every reachable action per state (h_add, h_max, h_FF, LM-cut): they
-/// read memory in order.
-struct FlatRelaxation {
-    explicit FlatRelaxation(const RelaxedTask& r);
-
-    std::span<const Prop> pre(std::uint32_t a) const {
-        return {pres.data() + pre_begin[a], pres.data() + pre_begin[a + 1]};
-    }
-
-    std::span<const Prop> add(std::uint32_t a) const {
-        return {adds.data() + add_begin[a], adds.data() + add_begin[a + 1]};
-    }
-
-    /// The actions with proposition p as a precondition.
-    std::span<const std::uint32_t> pre_of(Prop p) const {
-        return {pre_ofs.data() + pre_of_begin[p], pre_ofs.data() + pre_of_begin[p + 1]};
-    }
-
-    std::vector<std::uint32_t> pre_begin, add_begin, pre_of_begin, num_pre, pre_ofs;
-    std::vector<Prop> pres, adds;
-    std::vector<int> cost;
-    std::vector<char> is_goal;
-    std::vector<char> needed; // a goal or a precondition (an absent atom is neither)
 };
 
 } // namespace catplan::plan::ground
