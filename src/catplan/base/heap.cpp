@@ -1,0 +1,80 @@
+#include "catplan/base/heap.hpp"
+
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+#define CATPLAN_MALLOC_REPLACED 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer) ||                         \
+    __has_feature(memory_sanitizer)
+#define CATPLAN_MALLOC_REPLACED 1
+#endif
+#endif
+
+#if defined(__linux__) && defined(__GLIBC__) && !defined(CATPLAN_MALLOC_REPLACED)
+#define CATPLAN_HUGE_HEAP 1
+#include <cstddef>
+#include <cstdlib>
+#include <malloc.h>
+#include <sys/mman.h>
+#include <unistd.h>
+#endif
+
+namespace catplan {
+
+#ifdef CATPLAN_HUGE_HEAP
+namespace {
+
+constexpr std::uintptr_t kHugePage = std::uintptr_t{2} << 20;
+// Each growth of the heap reserves this much beyond the request (address space): the aligned
+// range lies inside it.
+constexpr int kTopPad = 8 << 20;
+// Blocks up to this size come from the heap, so the gap below the aligned range is one block
+// (glibc's default threshold starts at 128 KiB and rises by itself to 32 MiB on use).
+constexpr int kMmapThreshold = 4 << 20;
+
+std::uintptr_t heap_end() {
+    return reinterpret_cast<std::uintptr_t>(::sbrk(0));
+}
+
+// Where the heap's top chunk (the free end the next new blocks are cut from) starts.
+std::uintptr_t top_start() {
+    return heap_end() - mallinfo2().keepcost;
+}
+
+void* gap_block = nullptr; // held for the process's life, never touched
+
+} // namespace
+
+HeapRange back_heap_with_huge_pages() {
+    if (gap_block != nullptr || mallopt(M_TOP_PAD, kTopPad) == 0 ||
+        mallopt(M_MMAP_THRESHOLD, kMmapThreshold) == 0) {
+        return {};
+    }
+    // Grows the heap now, by more than its top holds, so that the pad is added now (volatile:
+    // an allocation freed unused may be left out by the compiler).
+    if (std::size_t keep = mallinfo2().keepcost; keep < kHugePage) {
+        void* volatile grown = std::malloc(keep + (64 << 10));
+        std::free(grown);
+    }
+    std::uintptr_t top = top_start();
+    HeapRange r{(top + kHugePage - 1) & ~(kHugePage - 1), heap_end() & ~(kHugePage - 1)};
+    if (r.end <= r.begin || r.begin - top < 64 ||
+        ::madvise(reinterpret_cast<void*>(r.begin), r.end - r.begin, MADV_HUGEPAGE) != 0) {
+        return {};
+    }
+    // A block from the top's start to just below r.begin: the blocks after it start in r. A
+    // chunk of a request of n bytes takes n plus 8, rounded up to 16, and its header is 16 bytes.
+    gap_block = std::malloc(r.begin - top - 32);
+    if (reinterpret_cast<std::uintptr_t>(gap_block) != top + 16) {
+        std::free(gap_block); // not cut from the top after all: the layout is left as it was
+        gap_block = nullptr;
+        return {};
+    }
+    return r;
+}
+#else
+HeapRange back_heap_with_huge_pages() {
+    return {};
+}
+#endif
+
+} // namespace catplan
