@@ -27,8 +27,10 @@ constexpr std::uintptr_t kHugePage = std::uintptr_t{2} << 20;
 // Each growth of the heap reserves this much beyond the request (address space): the aligned
 // range lies inside it.
 constexpr int kTopPad = 8 << 20;
-// Blocks up to this size come from the heap, so the gap below the aligned range is one block
-// (glibc's default threshold starts at 128 KiB and rises by itself to 32 MiB on use).
+// Blocks below this size come from the heap (the gap below the aligned range is one block);
+// larger ones are mapped on their own, so that a large block taken early (the out-of-memory
+// reserve, 16 MiB and never touched) does not take the aligned range. Set, it no longer moves by
+// itself as glibc's does (from 128 KiB up to the largest block freed, at most 32 MiB).
 constexpr int kMmapThreshold = 4 << 20;
 
 std::uintptr_t heap_end() {
