@@ -11,10 +11,12 @@
 
 #if defined(__linux__) && defined(__GLIBC__) && !defined(CATPLAN_MALLOC_REPLACED)
 #define CATPLAN_HUGE_HEAP 1
+#include <array>
 #include <cstddef>
 #include <cstdlib>
 #include <malloc.h>
 #include <sys/mman.h>
+#include <sys/resource.h>
 #include <unistd.h>
 #endif
 
@@ -44,10 +46,43 @@ std::uintptr_t top_start() {
 
 void* gap_block = nullptr; // held for the process's life, never touched
 
+// Whether the process's address space or data segment is limited (ulimit -v, -d): the top pad
+// would then take a share of the limit.
+bool limited() {
+    rlimit as{}, data{};
+    return ::getrlimit(RLIMIT_AS, &as) != 0 || ::getrlimit(RLIMIT_DATA, &data) != 0 ||
+           as.rlim_cur != RLIM_INFINITY || data.rlim_cur != RLIM_INFINITY;
+}
+
+// A block of `bytes` cut from the top chunk that starts at `top`, or null (nothing is then
+// held). A free block of that size elsewhere may serve the request first: it is held while the
+// request is made again.
+void* cut_from_top(std::uintptr_t top, std::size_t bytes) {
+    std::array<void*, 8> elsewhere{};
+    std::size_t held = 0;
+    void* block = nullptr;
+    for (;;) {
+        block = std::malloc(bytes);
+        if (reinterpret_cast<std::uintptr_t>(block) == top + 16) {
+            break;
+        }
+        if (block == nullptr || held == elsewhere.size()) {
+            std::free(block);
+            block = nullptr;
+            break;
+        }
+        elsewhere[held++] = block;
+    }
+    for (std::size_t i = 0; i < held; ++i) {
+        std::free(elsewhere[i]);
+    }
+    return block;
+}
+
 } // namespace
 
 HeapRange back_heap_with_huge_pages() {
-    if (gap_block != nullptr || mallopt(M_TOP_PAD, kTopPad) == 0 ||
+    if (gap_block != nullptr || limited() || mallopt(M_TOP_PAD, kTopPad) == 0 ||
         mallopt(M_MMAP_THRESHOLD, kMmapThreshold) == 0) {
         return {};
     }
@@ -65,13 +100,8 @@ HeapRange back_heap_with_huge_pages() {
     }
     // A block from the top's start to just below r.begin: the blocks after it start in r. A
     // chunk of a request of n bytes takes n plus 8, rounded up to 16, and its header is 16 bytes.
-    gap_block = std::malloc(r.begin - top - 32);
-    if (reinterpret_cast<std::uintptr_t>(gap_block) != top + 16) {
-        std::free(gap_block); // not cut from the top after all: the layout is left as it was
-        gap_block = nullptr;
-        return {};
-    }
-    return r;
+    gap_block = cut_from_top(top, r.begin - top - 32);
+    return gap_block != nullptr ? r : HeapRange{};
 }
 #else
 HeapRange back_heap_with_huge_pages() {

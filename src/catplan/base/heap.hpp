@@ -21,7 +21,8 @@ struct HeapRange {
 
 /// Lays out glibc's main heap so that its next allocations come from a 2 MiB-aligned range marked
 /// for transparent huge pages, and returns that range; an empty range (nothing changed) where
-/// that cannot be done: not Linux with glibc, under a sanitizer that replaces malloc, or refused.
+/// that cannot be done or should not: not Linux with glibc, under a sanitizer that replaces
+/// malloc, with the address space or data segment limited (ulimit -v, -d), or refused.
 HeapRange back_heap_with_huge_pages();
 
 } // namespace catplan

@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <cstdlib>
 #include <memory>
+#include <sys/resource.h>
 #include <vector>
 
 namespace catplan {
@@ -61,6 +62,24 @@ int layout_check() {
 
 TEST(Heap, NewBlocksComeFromTheAlignedRangeMarkedForHugePages) {
     EXPECT_EXIT(std::exit(layout_check()), ::testing::ExitedWithCode(0), "");
+}
+
+// With a limit on the data segment (ulimit -d), however large, the heap is left as it is. (Not
+// set under a sanitizer, whose shadow memory needs more than any such limit.)
+int limited_check() {
+    if (kMallocReplaced) {
+        return back_heap_with_huge_pages().empty() ? 0 : 2;
+    }
+    rlimit data{};
+    data.rlim_cur = data.rlim_max = rlim_t{1} << 40;
+    if (::setrlimit(RLIMIT_DATA, &data) != 0) {
+        return 1;
+    }
+    return back_heap_with_huge_pages().empty() ? 0 : 2;
+}
+
+TEST(Heap, LeftAloneUnderAMemoryLimit) {
+    EXPECT_EXIT(std::exit(limited_check()), ::testing::ExitedWithCode(0), "");
 }
 
 } // namespace

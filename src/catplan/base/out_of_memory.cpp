@@ -6,6 +6,8 @@
 namespace catplan {
 namespace {
 
+constexpr std::size_t kLeastReserve = std::size_t{64} << 10;
+
 std::unique_ptr<char[]>& reserve() {
     static std::unique_ptr<char[]> r;
     return r;
@@ -23,8 +25,12 @@ thread_local bool handling = false; // a note that cannot allocate must not call
 
 void install_out_of_memory_handler(std::size_t reserve_bytes) {
     reserve().reset(); // first, so that renewing does not hold two reserves at once
-    // Not zeroed: the pages are never touched, so the reserve costs nothing at start-up.
-    reserve() = std::make_unique_for_overwrite<char[]>(reserve_bytes);
+    // Not zeroed: the pages are never touched, so the reserve costs nothing at start-up. Where the
+    // address space is limited below it (ulimit -v), a smaller one, or none: the process must
+    // still start, and report running out of memory as it would with a reserve.
+    for (std::size_t n = reserve_bytes; n >= kLeastReserve && !reserve(); n /= 2) {
+        reserve().reset(new (std::nothrow) char[n]);
+    }
     std::set_new_handler(&handle_out_of_memory);
 }
 

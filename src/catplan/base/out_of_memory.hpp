@@ -21,8 +21,8 @@
 
 namespace catplan {
 
-/// Installs the new_handler and allocates its reserve (`reserve_bytes`); calling it again
-/// renews the reserve.
+/// Installs the new_handler and allocates its reserve (`reserve_bytes`, or as much of it as the
+/// address space allows, halving down to 64 KiB, else none); calling it again renews the reserve.
 void install_out_of_memory_handler(std::size_t reserve_bytes = std::size_t{16} << 20);
 
 /// The new_handler itself: releases the reserve, reads the innermost note and throws

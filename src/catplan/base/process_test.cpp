@@ -6,8 +6,12 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
+#include <cstdlib>
+#include <memory>
 #include <new>
 #include <string>
+#include <sys/resource.h>
 
 namespace catplan {
 namespace {
@@ -43,6 +47,58 @@ TEST(OutOfMemory, NoteThatCannotAllocateSaysNothing) {
     OutOfMemoryNote note([]() -> std::string { throw std::bad_alloc(); });
     EXPECT_THROW(handle_out_of_memory(), std::bad_alloc);
     EXPECT_EQ(out_of_memory_note(), "");
+}
+
+#if defined(__SANITIZE_ADDRESS__)
+constexpr bool kAddressSanitizer = true;
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+constexpr bool kAddressSanitizer = true;
+#else
+constexpr bool kAddressSanitizer = false;
+#endif
+#else
+constexpr bool kAddressSanitizer = false;
+#endif
+
+// In a child: the address space limited to what the process maps now plus 8 MiB (ulimit -v), a
+// 64 MiB reserve must still install (a smaller one), and a 32 MiB allocation then throws
+// std::bad_alloc. Exit 0 when both hold.
+int limited_reserve_check() {
+    long pages = 0;
+    if (std::FILE* f = std::fopen("/proc/self/statm", "r")) {
+        if (std::fscanf(f, "%ld", &pages) != 1) {
+            pages = 0;
+        }
+        std::fclose(f);
+    }
+    if (pages == 0) {
+        return 1;
+    }
+    rlimit limit{};
+    limit.rlim_cur = limit.rlim_max = static_cast<rlim_t>(pages) * 4096 + (std::size_t{8} << 20);
+    if (::setrlimit(RLIMIT_AS, &limit) != 0) {
+        return 2;
+    }
+    try {
+        install_out_of_memory_handler(std::size_t{64} << 20);
+    } catch (...) {
+        return 3;
+    }
+    try {
+        auto big = std::make_unique_for_overwrite<char[]>(std::size_t{32} << 20);
+        char* volatile kept = big.get(); // else the allocation may be left out
+        return kept != nullptr ? 4 : 5;
+    } catch (const std::bad_alloc&) {
+        return 0;
+    }
+}
+
+TEST(OutOfMemory, ReserveFitsALimitedAddressSpace) {
+    if (kAddressSanitizer) {
+        GTEST_SKIP() << "AddressSanitizer maps terabytes of shadow memory: no address space limit";
+    }
+    EXPECT_EXIT(std::exit(limited_reserve_check()), ::testing::ExitedWithCode(0), "");
 }
 
 } // namespace

@@ -119,8 +119,8 @@ void install_crash_handlers() {
 } // namespace
 
 void install_process_guards() {
-    install_out_of_memory_handler();
     std::set_terminate(on_terminate);
+    install_out_of_memory_handler();
     if (!kAddressSanitizer) {
         install_crash_handlers();
     }
