@@ -104,7 +104,7 @@ void BM_Evaluate(benchmark::State& state, plan::HeuristicKind kind) {
         }
         benchmark::DoNotOptimize(h->evaluate(0, s, nullptr, &preferred));
     }
-    state.counters["relaxed_actions"] = static_cast<double>(relaxed.actions().size());
+    state.counters["relaxed_actions"] = static_cast<double>(relaxed.num_actions());
 }
 
 void BM_Successors(benchmark::State& state) {

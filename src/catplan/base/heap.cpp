@@ -1,13 +1,6 @@
 #include "catplan/base/heap.hpp"
 
-#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
-#define CATPLAN_MALLOC_REPLACED 1
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer) ||                         \
-    __has_feature(memory_sanitizer)
-#define CATPLAN_MALLOC_REPLACED 1
-#endif
-#endif
+#include "catplan/base/sanitizers.hpp"
 
 #if defined(__linux__) && defined(__GLIBC__) && !defined(CATPLAN_MALLOC_REPLACED)
 #define CATPLAN_HUGE_HEAP 1

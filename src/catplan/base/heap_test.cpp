@@ -2,6 +2,7 @@
 // Each test runs in a child process (a death test), since the layout is the process's.
 
 #include "catplan/base/heap.hpp"
+#include "catplan/base/sanitizers.hpp"
 
 #include <gtest/gtest.h>
 
@@ -13,19 +14,6 @@
 
 namespace catplan {
 namespace {
-
-#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
-constexpr bool kMallocReplaced = true;
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer) ||                         \
-    __has_feature(memory_sanitizer)
-constexpr bool kMallocReplaced = true;
-#else
-constexpr bool kMallocReplaced = false;
-#endif
-#else
-constexpr bool kMallocReplaced = false;
-#endif
 
 // The exit code of the child: 0 when new blocks land in the returned range (or, where malloc is
 // replaced, when the range is empty); else which check failed.

@@ -3,6 +3,7 @@
 
 #include "catplan/base/assert.hpp"
 #include "catplan/base/out_of_memory.hpp"
+#include "catplan/base/sanitizers.hpp"
 
 #include <gtest/gtest.h>
 
@@ -48,18 +49,6 @@ TEST(OutOfMemory, NoteThatCannotAllocateSaysNothing) {
     EXPECT_THROW(handle_out_of_memory(), std::bad_alloc);
     EXPECT_EQ(out_of_memory_note(), "");
 }
-
-#if defined(__SANITIZE_ADDRESS__)
-constexpr bool kAddressSanitizer = true;
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-constexpr bool kAddressSanitizer = true;
-#else
-constexpr bool kAddressSanitizer = false;
-#endif
-#else
-constexpr bool kAddressSanitizer = false;
-#endif
 
 // In a child: the address space limited to what the process maps now plus 8 MiB (ulimit -v), a
 // 64 MiB reserve must still install (a smaller one), and a 32 MiB allocation then throws

@@ -2,6 +2,7 @@
 // stderr and a documented exit code (docs/exit-codes.md), never with a signal.
 
 #include "catplan/base/out_of_memory.hpp"
+#include "catplan/base/sanitizers.hpp"
 #include "catplan/cli/commands.hpp"
 
 #include <csignal>
@@ -84,18 +85,6 @@ extern "C" void on_crash(int signal) {
     static_cast<void>(::write(2, tail, std::strlen(tail)));
     ::_exit(kInternal);
 }
-
-#if defined(__SANITIZE_ADDRESS__)
-constexpr bool kAddressSanitizer = true;
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-constexpr bool kAddressSanitizer = true;
-#else
-constexpr bool kAddressSanitizer = false;
-#endif
-#else
-constexpr bool kAddressSanitizer = false;
-#endif
 
 void install_crash_handlers() {
     static char stack[64 * 1024];

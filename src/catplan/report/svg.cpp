@@ -1,6 +1,7 @@
 #include "catplan/report/svg.hpp"
 
 #include "catplan/base/dynamic_library.hpp"
+#include "catplan/base/sanitizers.hpp"
 
 #include <atomic>
 #include <cstdio>
@@ -19,15 +20,6 @@
 #include <graphviz/cgraph.h>
 #include <graphviz/graphviz_version.h>
 #include <graphviz/gvc.h>
-#endif
-
-// g++ defines __SANITIZE_ADDRESS__ under -fsanitize=address; clang answers __has_feature.
-#if defined(__SANITIZE_ADDRESS__)
-#define CATPLAN_ASAN 1
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-#define CATPLAN_ASAN 1
-#endif
 #endif
 
 #if defined(CATPLAN_HAVE_GVC) && defined(CATPLAN_ASAN)
