@@ -20,9 +20,10 @@ struct HeapRange {
 };
 
 /// Lays out glibc's main heap so that its next allocations come from a 2 MiB-aligned range marked
-/// for transparent huge pages, and returns that range; an empty range (nothing changed) where
-/// that cannot be done or should not: not Linux with glibc, under a sanitizer that replaces
-/// malloc, with the address space or data segment limited (ulimit -v, -d), or refused.
+/// for transparent huge pages, and returns that range; an empty range where that cannot be done
+/// or should not: not Linux with glibc, under a sanitizer that replaces malloc, or with the address
+/// space or data segment limited (ulimit -v, -d), when nothing is changed; or refused by the
+/// kernel or the allocator, when the allocator keeps the top pad and threshold it was given.
 HeapRange back_heap_with_huge_pages();
 
 } // namespace catplan
