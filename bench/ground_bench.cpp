@@ -47,7 +47,8 @@ Loaded& loaded() {
         auto p = pddl::parse_problem(sm.add_buffer("problem.pddl", read(g_problem)), *d, sm, sink);
         out.im = pddl::import_pddl(*d, &*p, sink);
         plan::Budget budget({}, plan::Clock::now());
-        out.task.emplace(std::move(*compile(out.im->problem, budget)));
+        auto task = compile(out.im->problem, budget);
+        out.task.emplace(std::move(*task));
         return out;
     }();
     return l;
