@@ -758,6 +758,16 @@ TEST(Rules, AStepOfAnActionIsTheRuleOfItThatApplies) {
     EXPECT_TRUE(v.valid) << v.reason;
     EXPECT_EQ(plan::action_plan(domain, rules).to_string(), written.to_string());
 
+    // A step only `move` fits is not replayed until a step both rules fit needs the state it
+    // leaves: `stay(kitchen)` applies only once the walker is in the kitchen.
+    auto later = parsed_plan(*l, "move(hall, kitchen)\nmove(kitchen, kitchen)\n");
+    auto later_rules = plan::rule_plan(domain, *problem.initial, later);
+    ASSERT_EQ(later_rules.steps.size(), 2u);
+    EXPECT_EQ(later_rules.steps[0].to_string(), "move(hall, kitchen)");
+    EXPECT_EQ(later_rules.steps[1].to_string(), "stay(kitchen)");
+    auto later_v = plan::validate_plan(problem, later_rules);
+    EXPECT_TRUE(later_v.valid) << later_v.reason;
+
     // Arguments that fit no rule, or no rule that applies, fail where the written plan does.
     auto wrong = parsed_plan(*l, "move(kitchen, kitchen)\nmove(hall, kitchen)\n");
     auto unapplied = plan::rule_plan(domain, *problem.initial, wrong);

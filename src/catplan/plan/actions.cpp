@@ -117,38 +117,85 @@ Result<Step> apply_action_step(const Domain& d, ACSet& x, const Step& action_ste
     return fail(std::move(why));
 }
 
+namespace {
+
+// The rules of a step's action whose arguments fit: the first such step, and whether another fits.
+struct Fits {
+    std::optional<Step> first;
+    bool several = false;
+};
+
+Fits fits_of(const Domain& d, const Step& s) {
+    Fits out;
+    for (const Rule* r : action_rules(d, s.action)) {
+        if (auto step = rule_step(*r, s)) {
+            if (out.first) {
+                out.several = true;
+                break;
+            }
+            out.first = std::move(step);
+        }
+    }
+    return out;
+}
+
+// rule_plan's replay: x and whether it still replays, advanced by one step of the plan.
+class Replay {
+public:
+    Replay(const Domain& d, const ACSet& initial) : d_(d), x_(initial) {}
+
+    // The rule step s is: the first rule of its action that applies, else the first its
+    // arguments fit, else s as written (see rule_plan).
+    Step advance(const Step& s) {
+        if (replaying_) {
+            if (auto applied = apply_action_step(d_, x_, s)) {
+                return std::move(*applied);
+            }
+        }
+        Fits fits = fits_of(d_, s);
+        const Rule* named = fits.first ? nullptr : d_.find_rule(s.action);
+        if (named != nullptr && replaying_ && named->parameters.size() == s.args.size()) {
+            auto m = resolve_step(*named, x_, s);
+            if (m && rewrite::rewrite_in_place(*named, x_, *m)) {
+                return s;
+            }
+        }
+        replaying_ = false;
+        return fits.first ? std::move(*fits.first) : s;
+    }
+
+private:
+    const Domain& d_;
+    ACSet x_;
+    bool replaying_ = true;
+};
+
+} // namespace
+
 Plan rule_plan(const Domain& d, const ACSet& initial, const Plan& plan) {
     if (!has_actions(d)) {
         return plan;
     }
+    // A step that at most one rule fits is that rule's step whatever the state: the plan is
+    // replayed (lazily, from where it stopped) only for a step that several rules fit.
     Plan out;
-    ACSet x = initial;
-    bool replaying = true;
-    for (const auto& s : plan.steps) {
-        if (replaying) {
-            if (auto applied = apply_action_step(d, x, s)) {
-                out.steps.push_back(std::move(*applied));
-                continue;
-            }
+    std::optional<Replay> replay;
+    std::size_t replayed = 0;
+    for (std::size_t i = 0; i < plan.steps.size(); ++i) {
+        const Step& s = plan.steps[i];
+        Fits fits = fits_of(d, s);
+        if (!fits.several) {
+            out.steps.push_back(fits.first ? std::move(*fits.first) : s);
+            continue;
         }
-        // Not replayed: the first rule the arguments fit, or a rule by its own name.
-        std::optional<Step> fits;
-        for (const Rule* r : action_rules(d, s.action)) {
-            fits = rule_step(*r, s);
-            if (fits) {
-                break;
-            }
+        if (!replay) {
+            replay.emplace(d, initial);
         }
-        const Rule* named = fits ? nullptr : d.find_rule(s.action);
-        if (named != nullptr && replaying && named->parameters.size() == s.args.size()) {
-            auto m = resolve_step(*named, x, s);
-            if (m && rewrite::rewrite_in_place(*named, x, *m)) {
-                out.steps.push_back(s);
-                continue;
-            }
+        for (; replayed < i; ++replayed) {
+            replay->advance(plan.steps[replayed]);
         }
-        replaying = false;
-        out.steps.push_back(fits ? *fits : s);
+        out.steps.push_back(replay->advance(s));
+        replayed = i + 1;
     }
     return out;
 }
