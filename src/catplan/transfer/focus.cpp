@@ -5,6 +5,7 @@
 #include <deque>
 #include <fmt/format.h>
 #include <numeric>
+#include <span>
 
 namespace catplan::transfer {
 namespace {
@@ -182,29 +183,69 @@ void Focus::seed(ObId ob, Part q) {
     }
 }
 
+// The columns of an object's homs and attributes, in the subgoal and in Y, that find_seeds reads
+// part by part (looked up once per object, not once per part).
+struct Focus::Columns {
+    struct Hom {
+        HomId f;
+        std::span<const Part> goal, y;
+        const std::vector<Part>* namesake; // of the hom's codomain
+    };
+
+    struct Attr {
+        std::span<const Value> goal, y;
+    };
+
+    std::vector<Hom> homs;
+    std::vector<Attr> attrs;
+
+    Columns(const ACSet& goal, const ACSet& y, ObId ob,
+            const std::vector<std::vector<Part>>& namesake) {
+        const auto& s = y.schema();
+        for (HomId f : s.homs_from(ob)) {
+            homs.push_back({f, goal.column(f), y.column(f), &namesake[s.hom(f).codom.index()]});
+        }
+        for (AttrId a : s.attrs_from(ob)) {
+            attrs.push_back({goal.column(a), y.column(a)});
+        }
+    }
+
+    // Whether part q of Y has the hom values (by namesakes) and concrete attribute values of
+    // the subgoal's part p.
+    bool same(Part p, Part q) const {
+        for (const auto& h : homs) {
+            Part t = h.goal[p];
+            if (t != kNoPart && (*h.namesake)[t] != h.y[q]) {
+                return false;
+            }
+        }
+        for (const auto& a : attrs) {
+            if (!value_agrees(a.goal[p], a.y[q])) {
+                return false;
+            }
+        }
+        return true;
+    }
+};
+
 // The parts of Y that differ from their namesakes in the subgoal (with the parts the subgoal's
 // homs point to from them), and the arguments of the subgoal's facts that Y lacks.
 void Focus::find_seeds() {
     const auto& s = y_->schema();
     for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
         ObId ob(o);
+        Columns cols(*goal_, *y_, ob, namesake_);
+        bool is_pointed = pointed(s, ob);
         for (Part p = 0; p < goal_->num_parts(ob); ++p) {
             bool differs = false;
-            if (pointed(s, ob)) {
+            if (is_pointed) {
                 Part q = namesake_[o][p];
-                for (HomId f : s.homs_from(ob)) {
-                    Part t = goal_->subpart(f, p);
-                    differs = differs || (t != kNoPart && namesake_[s.hom(f).codom.index()][t] !=
-                                                              y_->subpart(f, q));
-                }
-                for (AttrId a : s.attrs_from(ob)) {
-                    differs = differs || !value_agrees(goal_->subpart(a, p), y_->subpart(a, q));
-                }
+                differs = !cols.same(p, q);
                 if (differs) {
                     seed(ob, q);
                 }
             } else {
-                Part q = fact_in_y(ob, p);
+                Part q = fact_in_y(ob, cols, p);
                 differs = q == kNoPart;
                 if (!differs && seeded_[o][q]++) {
                     shared_fact_ = true; // two facts of the subgoal are one fact of Y
@@ -213,11 +254,10 @@ void Focus::find_seeds() {
             if (!differs) {
                 continue;
             }
-            for (HomId f : s.homs_from(ob)) {
-                Part t = goal_->subpart(f, p);
+            for (const auto& h : cols.homs) {
+                Part t = h.goal[p];
                 if (t != kNoPart) {
-                    ObId c = s.hom(f).codom;
-                    seed(c, namesake_[c.index()][t]);
+                    seed(s.hom(h.f).codom, (*h.namesake)[t]);
                 }
             }
         }
@@ -226,37 +266,21 @@ void Focus::find_seeds() {
 
 // A part of Y of ob (nothing points into ob) with the hom values of the subgoal's part p (by
 // namesakes) and its concrete attribute values, or kNoPart.
-Part Focus::fact_in_y(ObId ob, Part p) const {
-    const auto& s = y_->schema();
-    auto homs = s.homs_from(ob);
-    auto same = [&](Part q) {
-        for (HomId f : homs) {
-            Part t = goal_->subpart(f, p);
-            if (t != kNoPart && namesake_[s.hom(f).codom.index()][t] != y_->subpart(f, q)) {
-                return false;
-            }
-        }
-        for (AttrId a : s.attrs_from(ob)) {
-            if (!value_agrees(goal_->subpart(a, p), y_->subpart(a, q))) {
-                return false;
-            }
-        }
-        return true;
-    };
-    for (HomId f : homs) {
-        Part t = goal_->subpart(f, p);
+Part Focus::fact_in_y(ObId ob, const Columns& cols, Part p) const {
+    for (const auto& h : cols.homs) {
+        Part t = h.goal[p];
         if (t == kNoPart) {
             continue;
         }
-        for (Part q : y_->incident(f, namesake_[s.hom(f).codom.index()][t])) {
-            if (same(q)) {
+        for (Part q : y_->incident(h.f, (*h.namesake)[t])) {
+            if (cols.same(p, q)) {
                 return q;
             }
         }
         return kNoPart;
     }
     for (Part q = 0; q < y_->num_parts(ob); ++q) {
-        if (same(q)) {
+        if (cols.same(p, q)) {
             return q;
         }
     }

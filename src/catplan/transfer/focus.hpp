@@ -67,9 +67,11 @@ public:
 private:
     Focus(const NamedState& y, const acset::ACSet& subgoal);
 
+    struct Columns;
+
     std::optional<std::string> match_names(const NamedState& y);
     void find_seeds();
-    Part fact_in_y(ObId ob, Part p) const;
+    Part fact_in_y(ObId ob, const Columns& cols, Part p) const;
     void seed(ObId ob, Part q);
     void close(std::vector<std::vector<char>>& keep) const;
     FocusedProblem make_problem(std::vector<std::vector<char>> keep) const;
