@@ -7,6 +7,7 @@
 #include "catplan/pddl/steps.hpp"
 
 #include <fmt/format.h>
+#include <iterator>
 
 namespace catplan::cli {
 namespace {
@@ -140,10 +141,20 @@ std::string repair_cost_text(const transfer::StepTransfer& step) {
 
 } // namespace
 
-std::string pddl_steps_text(const TransferInputs& in, const transfer::TransferResult& t) {
+std::string pddl_steps_text(const TransferInputs& in, const transfer::TransferResult& t,
+                            const PddlChecks& checks) {
     const auto& pt = *in.pddl;
     const auto& st = *pt.setting;
+    std::size_t total = 0;
+    for (const auto& step : t.steps) {
+        total += step.target_steps.size();
+    }
+    const auto* ipc = checks.target_plan ? &*checks.target_plan : nullptr;
+    if (ipc != nullptr && ipc->size() != total) {
+        ipc = nullptr;
+    }
     std::string o;
+    auto out = std::back_inserter(o);
     std::size_t n = 0;
     for (std::size_t i = 0; i < t.steps.size(); ++i) {
         const auto& step = t.steps[i];
@@ -170,17 +181,20 @@ std::string pddl_steps_text(const TransferInputs& in, const transfer::TransferRe
             break;
         }
         if (step.target_steps.empty()) {
-            o += fmt::format("  -  {}: {}, none needed (the target state holds what it made)\n",
-                             from, how);
+            fmt::format_to(out, "  -  {}: {}, none needed (the target state holds what it made)\n",
+                           from, how);
             continue;
         }
         for (std::size_t k = 0; k < step.target_steps.size(); ++k) {
-            std::string line =
-                fmt::format("  {}. {}", ++n, pddl_transfer::ipc_text(st, step.target_steps[k]));
+            std::string text = ipc != nullptr ? (*ipc)[n].to_string()
+                                              : pddl_transfer::ipc_text(st, step.target_steps[k]);
+            std::string line = fmt::format("  {}. {}", ++n, text);
             if (k == 0) {
-                line = fmt::format("{:<32} <- {}: {}", line, from, how);
+                fmt::format_to(out, "{:<32} <- {}: {}\n", line, from, how);
+            } else {
+                o += line;
+                o += '\n';
             }
-            o += line + "\n";
         }
     }
     return o;
@@ -192,6 +206,7 @@ int finish_pddl_transfer(const TransferInputs& in, const TransferArgs& a,
     const auto& st = *in.pddl->setting;
     auto c = pddl_transfer::check(st, in.pddl->plan, t);
     plan_text = c.plan_text;
+    checks.target_plan = std::move(c.target_plan);
     if (c.source_cost) {
         checks.text += "source plan cost: " + pddl::describe_cost(*c.source_cost) + "\n";
         checks.json["source_cost"] = cost_json(*c.source_cost);

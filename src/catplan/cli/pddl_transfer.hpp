@@ -41,17 +41,20 @@ std::optional<TransferInputs> load_pddl_transfer_inputs(Session& s, const lang::
 /// with every error printed.
 bool load_ipc_plan(Session& s, TransferInputs& in, const std::string& path, std::ostream& err);
 
-/// The transferred steps in IPC form, each with the source step it comes from and whether it
-/// corresponds or was repaired.
-std::string pddl_steps_text(const TransferInputs& in, const transfer::TransferResult& t);
-
 /// What finish_pddl_transfer found: the plans' costs, the comparison with --target-problem and
 /// the PDDL validator's verdict, in words (`text`, lines) and for --format json (`json`, the
 /// object under "pddl").
 struct PddlChecks {
     std::string text;
     nlohmann::ordered_json json = nlohmann::ordered_json::object();
+    /// The target plan in IPC form, where the check wrote it (pddl_transfer::Checks).
+    std::optional<pddl::IpcPlan> target_plan;
 };
+
+/// The transferred steps in IPC form (those of checks.target_plan where it has them all), each
+/// with the source step it comes from and whether it corresponds or was repaired.
+std::string pddl_steps_text(const TransferInputs& in, const transfer::TransferResult& t,
+                            const PddlChecks& checks);
 
 /// After a transfer with PDDL inputs: the target plan in IPC form put in `plan_text`, what
 /// catplan's PDDL validator and the comparison with --target-problem found put in `checks`, and

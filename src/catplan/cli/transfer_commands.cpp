@@ -188,7 +188,8 @@ nlohmann::ordered_json cost_json(const Result<std::int64_t>& c) {
     return {{"total", *c}};
 }
 
-std::string text_report(const TransferCommandArgs& a, const TransferInputs& in, const Outcome& r) {
+std::string text_report(const TransferCommandArgs& a, const TransferInputs& in, const Outcome& r,
+                        const PddlChecks& checks) {
     const auto& t = r.t;
     const auto& v = t.verdict;
     const auto& goal = v.goal;
@@ -208,7 +209,7 @@ std::string text_report(const TransferCommandArgs& a, const TransferInputs& in, 
     }
     o += fmt::format("target plan ({}):\n", step_count(transfer::target_plan(t.steps).size()));
     if (in.pddl) {
-        o += pddl_steps_text(in, t);
+        o += pddl_steps_text(in, t, checks);
     }
     for (std::size_t i = 0; i < t.steps.size() && !in.pddl; ++i) {
         const auto& st = t.steps[i];
@@ -410,7 +411,7 @@ int cmd_transfer(const TransferCommandArgs& a, std::ostream& out, std::ostream& 
         }
         text = json::dump(j, 2) + "\n";
     } else {
-        text = text_report(a, *in, r) + checks.text;
+        text = text_report(a, *in, r, checks) + checks.text;
     }
     if (in->pddl) {
         // With PDDL inputs, -o is the target IPC plan and the report goes to stdout.
