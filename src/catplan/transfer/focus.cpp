@@ -1,5 +1,6 @@
 #include "catplan/transfer/focus.hpp"
 
+#include "catplan/base/assert.hpp"
 #include "catplan/hom/hom_search.hpp"
 
 #include <deque>
@@ -92,19 +93,19 @@ bool embeds_by_names(const NamedState& x, const ACSet& goal, const Result<Focus>
         variables = variables || goal.num_vars(AttrTypeId(t)) > 0;
     }
     if (!variables) {
-        // Part by part (the seeds of a focus are exactly what differs by names), unless two facts
-        // of the goal found the same fact of x.
+        // Part by part (a focus finds what differs by names), unless nothing differs and two
+        // facts of the goal found the same fact of x.
         std::optional<Result<Focus>> own;
         if (focus == nullptr) {
-            own.emplace(Focus::of(x, goal));
+            own.emplace(Focus::of(x, goal, Focus::Scan::FirstDifference));
             focus = &*own;
         }
         const auto& f = *focus;
-        if (f && !f->shared_fact()) {
-            return f->seeds() == 0;
-        }
         if (!f) {
             return false;
+        }
+        if (f->differs() || !f->shared_fact()) {
+            return !f->differs();
         }
     }
     hom::HomSearchOptions opt;
@@ -129,8 +130,9 @@ bool embeds_by_names(const NamedState& x, const ACSet& goal, const Result<Focus>
 
 Focus::Focus(const NamedState& y, const ACSet& subgoal) : y_(&y.state()), goal_(&subgoal) {}
 
-Result<Focus> Focus::of(const NamedState& y, const ACSet& subgoal) {
+Result<Focus> Focus::of(const NamedState& y, const ACSet& subgoal, Scan scan) {
     Focus f(y, subgoal);
+    f.scan_ = scan;
     if (auto why = f.match_names(y)) {
         return fail(*why);
     }
@@ -247,6 +249,7 @@ void Focus::find_seeds() {
             } else {
                 Part q = fact_in_y(ob, cols, p);
                 differs = q == kNoPart;
+                lacks_fact_ = lacks_fact_ || differs;
                 if (!differs && seeded_[o][q]++) {
                     shared_fact_ = true; // two facts of the subgoal are one fact of Y
                 }
@@ -259,6 +262,9 @@ void Focus::find_seeds() {
                 if (t != kNoPart) {
                     seed(s.hom(h.f).codom, (*h.namesake)[t]);
                 }
+            }
+            if (scan_ == Scan::FirstDifference) {
+                return;
             }
         }
     }
@@ -288,6 +294,7 @@ Part Focus::fact_in_y(ObId ob, const Columns& cols, Part p) const {
 }
 
 FocusedProblem Focus::problem(std::size_t radius) const {
+    CATPLAN_ASSERT(scan_ == Scan::Whole, "a focused problem needs every seed");
     const auto& s = y_->schema();
     std::vector<std::vector<char>> keep(s.num_obs());
     for (std::uint32_t o = 0; o < s.num_obs(); ++o) {

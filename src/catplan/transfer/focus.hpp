@@ -49,16 +49,25 @@ struct FocusedProblem {
 
 class Focus {
 public:
-    /// The parts of y that differ from subgoal (none: y holds the subgoal by names, unless
-    /// shared_fact()), or why the subgoal cannot be compared with y by names (a part without a
-    /// name or without a namesake in y).
-    static Result<Focus> of(const NamedState& y, const acset::ACSet& subgoal);
+    /// How much of the subgoal Focus::of compares: all of it, or up to its first part that
+    /// differs (enough to tell whether y holds the subgoal by names; no problem() then).
+    enum class Scan { Whole, FirstDifference };
 
-    /// Whether two facts of the subgoal are the same fact of y (so that "no seeds" does not mean
-    /// that the subgoal embeds monically).
+    /// The parts of y that differ from subgoal (none, and no fact lacking: y holds the subgoal
+    /// by names, unless shared_fact()), or why the subgoal cannot be compared with y by names (a
+    /// part without a name or without a namesake in y).
+    static Result<Focus> of(const NamedState& y, const acset::ACSet& subgoal,
+                            Scan scan = Scan::Whole);
+
+    /// Whether some part of the subgoal differs from y by names: a seed, or a fact y lacks (one
+    /// of no arguments seeds no part).
+    bool differs() const { return !seeds_.empty() || lacks_fact_; }
+
+    /// Whether two facts of the subgoal are the same fact of y (so that "no difference" does not
+    /// mean that the subgoal embeds monically).
     bool shared_fact() const { return shared_fact_; }
 
-    /// The problem on the parts of Y within `radius` steps of a seed.
+    /// The problem on the parts of Y within `radius` steps of a seed (of a Scan::Whole focus).
     FocusedProblem problem(std::size_t radius) const;
 
     /// How many parts of Y differ from the subgoal or are arguments of a fact Y lacks.
@@ -86,6 +95,8 @@ private:
     /// Per object, per part of Y: seeded (pointed objects), or found by a fact of the subgoal.
     std::vector<std::vector<char>> seeded_;
     bool shared_fact_ = false;
+    bool lacks_fact_ = false; ///< a fact of the subgoal that y lacks
+    Scan scan_ = Scan::Whole;
 };
 
 } // namespace catplan::transfer

@@ -122,6 +122,20 @@ TEST(Focus, ComparesByNamesAndSaysWhenItCannot) {
     EXPECT_EQ(g.error(), "the subgoal's Block D has no namesake in the target state");
 }
 
+// A fact of no arguments (a blocks world's HandEmpty) that y lacks differs though it seeds no
+// part.
+TEST(Focus, AMissingFactOfNoArgumentsDiffers) {
+    Blocks b;
+    ObId hand_empty = b.schema->add_ob("HandEmpty");
+    NamedState y(b.state(2, {{0}, {1}}));
+    ACSet goal = b.state(2, {{0}, {1}});
+    goal.add_part(hand_empty, "handempty");
+    EXPECT_FALSE(embeds_by_names(y, goal));
+    ACSet held = y.state();
+    held.add_part(hand_empty, "handempty");
+    EXPECT_TRUE(embeds_by_names(NamedState(held), goal));
+}
+
 TEST(Focus, NamesOutOfOrderOrSharedAreLookedUp) {
     Blocks b;
     NamedState y(b.state(3, {{0, 1}, {2}})); // B on A; C

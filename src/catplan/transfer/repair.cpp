@@ -154,8 +154,7 @@ Repair Repairer::repair(const NamedState& y, const ACSet& subgoal, std::size_t s
                         const CreatedName& name, const plan::Step* source) {
     Request q{y, subgoal, step, name, source};
     Repair out;
-    auto focus = Focus::of(y, subgoal);
-    if (embeds_by_names(y, subgoal, &focus)) {
+    if (embeds_by_names(y, subgoal)) {
         out.found = true;
         out.by_names = true;
         return out;
@@ -163,6 +162,8 @@ Repair Repairer::repair(const NamedState& y, const ACSet& subgoal, std::size_t s
     if (use_action_repair(q, out)) {
         return out;
     }
+    // Every seed, for the focused problems (the check above stopped at the first difference).
+    auto focus = Focus::of(y, subgoal);
     if (!(focus && focus_repair(q, *focus, out))) {
         if (embeds(subgoal, y.state())) {
             out.found = true; // by another morphism than the names'
