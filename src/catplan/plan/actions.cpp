@@ -161,7 +161,10 @@ public:
             }
         }
         replaying_ = false;
-        return fits.first ? std::move(*fits.first) : s;
+        if (fits.first) {
+            return std::move(*fits.first);
+        }
+        return s;
     }
 
 private:
@@ -185,7 +188,11 @@ Plan rule_plan(const Domain& d, const ACSet& initial, const Plan& plan) {
         const Step& s = plan.steps[i];
         Fits fits = fits_of(d, s);
         if (!fits.several) {
-            out.steps.push_back(fits.first ? std::move(*fits.first) : s);
+            if (fits.first) {
+                out.steps.push_back(std::move(*fits.first));
+            } else {
+                out.steps.push_back(s);
+            }
             continue;
         }
         if (!replay) {
