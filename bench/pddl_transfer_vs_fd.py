@@ -15,7 +15,8 @@ Fast Downward (lama-first) solves the source problem and writes the source plan 
 in DIR and used again when the problem is the same); `catplan transfer` carries that plan into the
 target domain, whole process, writing the target IPC plan (-o) and the target problem Δ_F(I),
 Δ_F(G) (--problem-output); Fast Downward then solves that target problem from scratch, whole
-process. VAL checks the source plan, the transferred plan and FD's target plan on their own domain
+process. Both tools write their plans to files that do not exist before the run (the previous
+run's are removed, untimed). VAL checks the source plan, the transferred plan and FD's target plan on their own domain
 files. Prints, per direction and size, the medians of --transfer-runs runs of the transfer and
 of --runs runs of replanning (and FD's own search time, from its log), their ratios and the plan
 lengths, the start-up floor of the harness (a process that does nothing, and `catplan --version`,
@@ -131,6 +132,11 @@ def one_size(a, direction, n, out):
     transfer_s, transfer_cpu, replan_s, replan_cpu, search_s = [], [], [], [], []
     for i in range(max(a.runs, a.transfer_runs)):
         if i < a.transfer_runs:
+            # As FD's plan file is (fd()), the transfer's outputs are removed before its run, so
+            # that each tool writes new files: on ext4 replacing a file costs more than writing
+            # a new one (bench/RESULTS.md), and the VAL check sees this run's plan.
+            for f in (target_plan, target_problem):
+                f.unlink(missing_ok=True)
             t, r = timed(transfer_cmd(a.catplan, map_file, map_name, problem, splan,
                                       ["-o", str(target_plan), "--problem-output",
                                        str(target_problem)]), a.limit)
