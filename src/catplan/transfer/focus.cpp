@@ -236,6 +236,9 @@ void Focus::find_seeds() {
     const auto& s = y_->schema();
     for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
         ObId ob(o);
+        if (goal_->num_parts(ob) == 0) {
+            continue;
+        }
         Columns cols(*goal_, *y_, ob, namesake_);
         bool is_pointed = pointed(s, ob);
         for (Part p = 0; p < goal_->num_parts(ob); ++p) {
