@@ -748,25 +748,25 @@ TEST(Rules, AStepOfAnActionIsTheRuleOfItThatApplies) {
     EXPECT_EQ(plan::action_rules(domain, "move").size(), 2u);
     EXPECT_TRUE(plan::action_rules(domain, "stay").empty());
 
+    // The rule steps of a written plan, which validate.
+    auto rule_steps = [&](const plan::Plan& written) {
+        auto rules = plan::rule_plan(domain, *problem.initial, written);
+        auto v = plan::validate_plan(problem, rules);
+        EXPECT_TRUE(v.valid) << v.reason;
+        EXPECT_EQ(plan::action_plan(domain, rules).to_string(), written.to_string());
+        std::vector<std::string> out;
+        for (const auto& step : rules.steps) {
+            out.push_back(step.to_string());
+        }
+        return out;
+    };
     auto written = parsed_plan(*l, "move(hall, hall)\nmove(hall, kitchen)\n");
     ASSERT_TRUE(plan::check_plan(written, domain, *problem.initial, l->sink)) << l->sink.render();
-    auto rules = plan::rule_plan(domain, *problem.initial, written);
-    ASSERT_EQ(rules.steps.size(), 2u);
-    EXPECT_EQ(rules.steps[0].to_string(), "stay(hall)");
-    EXPECT_EQ(rules.steps[1].to_string(), "move(hall, kitchen)");
-    auto v = plan::validate_plan(problem, rules);
-    EXPECT_TRUE(v.valid) << v.reason;
-    EXPECT_EQ(plan::action_plan(domain, rules).to_string(), written.to_string());
-
+    EXPECT_EQ(rule_steps(written), (std::vector<std::string>{"stay(hall)", "move(hall, kitchen)"}));
     // A step only `move` fits is not replayed until a step both rules fit needs the state it
     // leaves: `stay(kitchen)` applies only once the walker is in the kitchen.
-    auto later = parsed_plan(*l, "move(hall, kitchen)\nmove(kitchen, kitchen)\n");
-    auto later_rules = plan::rule_plan(domain, *problem.initial, later);
-    ASSERT_EQ(later_rules.steps.size(), 2u);
-    EXPECT_EQ(later_rules.steps[0].to_string(), "move(hall, kitchen)");
-    EXPECT_EQ(later_rules.steps[1].to_string(), "stay(kitchen)");
-    auto later_v = plan::validate_plan(problem, later_rules);
-    EXPECT_TRUE(later_v.valid) << later_v.reason;
+    EXPECT_EQ(rule_steps(parsed_plan(*l, "move(hall, kitchen)\nmove(kitchen, kitchen)\n")),
+              (std::vector<std::string>{"move(hall, kitchen)", "stay(kitchen)"}));
 
     // Arguments that fit no rule, or no rule that applies, fail where the written plan does.
     auto wrong = parsed_plan(*l, "move(kitchen, kitchen)\nmove(hall, kitchen)\n");
