@@ -278,13 +278,17 @@ public:
         return g.predicate == "=" ? g.args[0].name == g.args[1].name : atoms_.count(key(g)) > 0;
     }
 
-    // The first precondition of the step's action that does not hold, in words.
+    // The first precondition of the step's action that does not hold, in words. The atoms are
+    // grounded as their keys (ground() only for the words).
     std::optional<std::string> false_precondition(const Action& a, const IpcStep& s) const {
         for (const auto& l : a.precondition) {
-            Atom g = ground(a, l.atom, s);
-            if (holds(g) != l.positive) {
+            const Atom& atom = l.atom;
+            bool holds = atom.predicate == "="
+                             ? argument(a, atom.args[0], s) == argument(a, atom.args[1], s)
+                             : atoms_.count(key(a, atom, s)) > 0;
+            if (holds != l.positive) {
                 return fmt::format("precondition {} does not hold",
-                                   Literal{g, l.positive, {}}.to_string());
+                                   Literal{ground(a, atom, s), l.positive, {}}.to_string());
             }
         }
         return std::nullopt;
@@ -294,10 +298,10 @@ public:
     // holds after the step).
     void apply(const Action& a, const IpcStep& s) {
         for (const auto& atom : a.del) {
-            atoms_.erase(key(ground(a, atom, s)));
+            atoms_.erase(key(a, atom, s));
         }
         for (const auto& atom : a.add) {
-            atoms_.insert(key(ground(a, atom, s)));
+            atoms_.insert(key(a, atom, s));
         }
     }
 
@@ -318,6 +322,27 @@ private:
         for (const auto& t : g.args) {
             k += ' ';
             k += t.name;
+        }
+        return k;
+    }
+
+    // What a term of the action's atom names at the step: the step's argument for a parameter
+    // (as ground() reads it), else the term's own name.
+    static const std::string& argument(const Action& a, const Term& t, const IpcStep& s) {
+        for (std::size_t i = 0; t.variable && i < a.params.size(); ++i) {
+            if (a.params[i].name == t.name) {
+                return s.args[i];
+            }
+        }
+        return t.name;
+    }
+
+    // The key of key(ground(a, atom, s)), without the ground atom.
+    static std::string key(const Action& a, const Atom& atom, const IpcStep& s) {
+        std::string k = atom.predicate;
+        for (const auto& t : atom.args) {
+            k += ' ';
+            k += argument(a, t, s);
         }
         return k;
     }
