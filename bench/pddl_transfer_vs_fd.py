@@ -11,18 +11,18 @@ For each direction and each seeded blocksworld problem of N blocks in the source
         pick-up and the stack after it merge into one move);
   3to4: the 3-operator blocksworld carried along three_to_four.cp into the 4-operator one (every
         move repaired into two steps).
-Fast Downward (lama-first) solves the source problem and writes the source plan (not timed; kept
-in DIR and used again when the problem is the same); `catplan transfer` carries that plan into the
+Fast Downward (lama-first) solves the source problem and writes the source plan (not timed; kept in
+DIR and used again when the problem is the same); `catplan transfer` carries that plan into the
 target domain, whole process, writing the target IPC plan (-o) and the target problem Δ_F(I),
 Δ_F(G) (--problem-output); Fast Downward then solves that target problem from scratch, whole
-process. Both tools write their plans to files that do not exist before the run (the previous
-run's are removed, untimed). VAL checks the source plan, the transferred plan and FD's target plan on their own domain
-files. Prints, per direction and size, the medians of --transfer-runs runs of the transfer and
-of --runs runs of replanning (and FD's own search time, from its log), their ratios and the plan
-lengths, the start-up floor of the harness (a process that does nothing, and `catplan --version`,
-timed the same way), and the load average of the machine before and after. Each run is timed whole, wall and CPU (user + system of the
-process and its children): on a shared machine the wall time of a short process depends on the
-load more than its CPU time does.
+process. Both tools write their plans to files that do not exist before the run (the previous run's
+are removed, untimed). VAL checks the source plan, the transferred plan and FD's target plan on
+their own domain files. Prints, per direction and size, the medians of --transfer-runs runs of the
+transfer and of --runs runs of replanning (and FD's own search time, from its log), their ratios
+and the plan lengths, the start-up floor of the harness (a process that does nothing, and
+`catplan --version`, timed the same way), and the load average of the machine before and after.
+Each run is timed whole, wall and CPU (user + system of the process and its children): on a shared
+machine the wall time of a short process depends on the load more than its CPU time does.
 
 With --batch K (4to3 only), the same source plan K times over in one directory, transferred by one
 catplan process with --jobs 1 and --jobs 2: the throughput of batch transfer on one core and on two.

@@ -263,6 +263,17 @@ std::vector<StepProblem> static_problems(const Domain& d, const Problem& p, cons
     return out;
 }
 
+// The step's argument for a term of the action's atom that is one of the action's parameters
+// (the first of that name), or nullptr: what ground() puts in its place.
+const std::string* bound_argument(const Action& a, const Term& t, const IpcStep& s) {
+    for (std::size_t i = 0; t.variable && i < a.params.size(); ++i) {
+        if (a.params[i].name == t.name) {
+            return &s.args[i];
+        }
+    }
+    return nullptr;
+}
+
 // A state as PDDL reads it: the ground atoms that hold, each kept as its predicate and arguments
 // joined by spaces (names are lowered and have no spaces).
 class Facts {
@@ -326,15 +337,10 @@ private:
         return k;
     }
 
-    // What a term of the action's atom names at the step: the step's argument for a parameter
-    // (as ground() reads it), else the term's own name.
+    // What a term of the action's atom names at the step (its name in ground(a, atom, s)).
     static const std::string& argument(const Action& a, const Term& t, const IpcStep& s) {
-        for (std::size_t i = 0; t.variable && i < a.params.size(); ++i) {
-            if (a.params[i].name == t.name) {
-                return s.args[i];
-            }
-        }
-        return t.name;
+        const std::string* bound = bound_argument(a, t, s);
+        return bound != nullptr ? *bound : t.name;
     }
 
     // The key of key(ground(a, atom, s)), without the ground atom.
@@ -408,10 +414,8 @@ IpcValidation replay_ipc_plan(const Domain& d, const Problem& p, const IpcPlan& 
 Atom ground(const Action& a, const Atom& atom, const IpcStep& s) {
     Atom g = atom;
     for (auto& t : g.args) {
-        for (std::size_t i = 0; t.variable && i < a.params.size(); ++i) {
-            if (a.params[i].name == t.name) {
-                t = Term{s.args[i], false, t.range};
-            }
+        if (const std::string* bound = bound_argument(a, t, s)) {
+            t = Term{*bound, false, t.range};
         }
     }
     return g;
