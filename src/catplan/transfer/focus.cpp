@@ -86,7 +86,7 @@ bool names_in_order(const NamedState& y, const ACSet& goal, ObId ob) {
 
 } // namespace
 
-bool embeds_by_names(const NamedState& x, const ACSet& goal, const Result<Focus>* focus) {
+bool embeds_by_names(const NamedState& x, const ACSet& goal) {
     const auto& s = goal.schema();
     bool variables = false;
     for (std::uint32_t t = 0; t < s.num_attr_types(); ++t) {
@@ -95,12 +95,7 @@ bool embeds_by_names(const NamedState& x, const ACSet& goal, const Result<Focus>
     if (!variables) {
         // Part by part (a focus finds what differs by names), unless nothing differs and two
         // facts of the goal found the same fact of x.
-        std::optional<Result<Focus>> own;
-        if (focus == nullptr) {
-            own.emplace(Focus::of(x, goal, Focus::Scan::FirstDifference));
-            focus = &*own;
-        }
-        const auto& f = *focus;
+        auto f = Focus::of(x, goal, Focus::Scan::FirstDifference);
         if (!f) {
             return false;
         }

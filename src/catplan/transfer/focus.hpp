@@ -32,10 +32,8 @@ namespace catplan::transfer {
 class Focus;
 
 /// Whether goal embeds monically in x by a morphism that sends each part of an object that homs
-/// point into to its namesake in x (a search that has only the facts left to place); `focus`,
-/// when given, is Focus::of(x, goal), computed already.
-bool embeds_by_names(const NamedState& x, const acset::ACSet& goal,
-                     const Result<Focus>* focus = nullptr);
+/// point into to its namesake in x (a search that has only the facts left to place).
+bool embeds_by_names(const NamedState& x, const acset::ACSet& goal);
 
 /// A repair's problem restricted to a neighbourhood of what the subgoal changes.
 struct FocusedProblem {
