@@ -236,7 +236,12 @@ void Focus::find_seeds() {
         }
         Columns cols(*goal_, *y_, ob, namesake_);
         bool is_pointed = pointed(s, ob);
-        for (Part p = 0; p < goal_->num_parts(ob); ++p) {
+        // A step appends what it creates, so a part Y lacks is most often among the subgoal's
+        // last: a scan for the first difference reads the parts from the end.
+        bool backwards = scan_ == Scan::FirstDifference;
+        Part n = static_cast<Part>(goal_->num_parts(ob));
+        for (Part k = 0; k < n; ++k) {
+            Part p = backwards ? n - 1 - k : k;
             bool differs = false;
             if (is_pointed) {
                 Part q = namesake_[o][p];
