@@ -111,6 +111,9 @@ struct SearchOptions {
     /// After the first plan, keep looking for shorter ones (weighted A* with weights 5, 3, 2, 1,
     /// bounded by the best plan) until the time limit or until the last weight is done.
     bool anytime = false;
+    /// Check a grounded search's plan from its text (validate_plan) before returning it. A
+    /// caller that replays the steps by their text and checks where they lead may leave it off.
+    bool validate = true;
     std::uint64_t max_nodes = 0; // expansions
     double max_seconds = 0;
     /// Resident bytes of the whole process; 0: the default, 75% of the machine's memory

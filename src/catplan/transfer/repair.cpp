@@ -296,6 +296,7 @@ bool Repairer::focus_repair(const Request& q, const Focus& focus, Repair& out) {
     if (options.max_nodes == 0 || options.max_nodes > options_.focus_max_nodes) {
         options.max_nodes = options_.focus_max_nodes;
     }
+    options.validate = false; // a focused plan is replayed by names on the whole state below
     for (std::size_t radius : options_.radii) {
         auto fp = focus.problem(radius);
         if (fp.whole) {

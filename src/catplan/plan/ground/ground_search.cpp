@@ -305,6 +305,8 @@ void search_task(const Task& task, const SearchOptions& options, Budget& budget,
         const Problem& problem = *task.problem;
         if (!plan) {
             out.rejected = plan.error();
+        } else if (!options.validate) {
+            r.plan = std::move(*plan); // each step was checked at the match the search chose
         } else if (auto v = validate_plan(problem, *plan); v.valid) {
             r.plan = std::move(*plan);
         } else if (v.ambiguous && (!problem.goal || embed_goal(*problem.goal, *last))) {
