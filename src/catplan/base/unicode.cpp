@@ -71,6 +71,10 @@ CodePoint decode_utf8(std::string_view text, std::size_t i) {
 
 bool is_valid_utf8(std::string_view text) {
     for (std::size_t i = 0; i < text.size();) {
+        if (static_cast<unsigned char>(text[i]) < 0x80) {
+            ++i; // ASCII, most of any source text
+            continue;
+        }
         CodePoint cp = decode_utf8(text, i);
         if (!cp.valid) {
             return false;
@@ -105,6 +109,10 @@ bool check_utf8(const SourceManager& sources, std::uint32_t file, DiagnosticSink
     std::string_view text = sources.text(file);
     std::vector<SourceRange> bad;
     for (std::size_t i = 0; i < text.size();) {
+        if (static_cast<unsigned char>(text[i]) < 0x80) {
+            ++i; // ASCII, most of any source text
+            continue;
+        }
         CodePoint cp = decode_utf8(text, i);
         if (!cp.valid) {
             auto b = static_cast<std::uint32_t>(i);
