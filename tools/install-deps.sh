@@ -7,7 +7,8 @@
 #   tools/install-deps.sh coverage that and gcovr (tools/coverage.sh)
 set -eu
 
-PACKAGES="g++ cmake ninja-build make python3 pkg-config clang-format
+# lld links the release command, its functions in the order of cmake/catplan.order.
+PACKAGES="g++ cmake ninja-build make python3 pkg-config clang-format lld
 libgtest-dev libgmock-dev libbenchmark-dev libcli11-dev nlohmann-json3-dev libfmt-dev
 libsqlite3-dev libicu-dev graphviz libgraphviz-dev chromium"
 # The database layer: PostgreSQL's client library, and its server for the tests.
