@@ -92,13 +92,13 @@ void make_vocabulary(Import& im) {
 /// The parts of one PDDL object (or rule term) in a state: one per type it is of.
 using EntityParts = std::map<std::string, Part>;
 
-/// Adds the parts of an object of every type of `types` (and their ancestors) named `name`,
-/// linked by the is-a homs; `pinned` sets the name attribute.
-EntityParts add_entity(const Import& im, ACSet& x, const std::vector<std::string>& types,
+/// Adds the parts of an object of the types `kinds` (every type it is of, parents first:
+/// ancestors()) named `name`, linked by the is-a homs; `pinned` sets the name attribute.
+EntityParts add_entity(const Import& im, ACSet& x, const std::vector<std::string>& kinds,
                        const std::string& name, bool pinned) {
     const Domain& d = im.pddl_domain;
     EntityParts parts;
-    for (const auto& t : ancestors(d, types)) {
+    for (const auto& t : kinds) {
         Part p = x.add_part(im.type_ob.at(t), name);
         if (pinned) {
             x.set_subpart(im.name_attr.at(t), p, Value::string(name));
@@ -253,7 +253,8 @@ private:
         std::vector<EntityParts> ents;
         std::vector<std::string> names;
         for (std::size_t b = 0; b < reps.size(); ++b) {
-            ents.push_back(add_entity(im_, rule->K, types[b], reps[b].name, reps[b].constant));
+            ents.push_back(add_entity(im_, rule->K, ancestors(im_.pddl_domain, types[b]),
+                                      reps[b].name, reps[b].constant));
             names.push_back(reps[b].name);
         }
         // K: the entities and the present facts that stay true; L adds the deleted ones, R the
@@ -372,9 +373,14 @@ std::shared_ptr<ACSet> make_state(const Import& im, const std::vector<TypedName>
     auto x = std::make_shared<ACSet>(im.domain->schema);
     std::vector<EntityParts> ents;
     std::unordered_map<std::string, std::size_t> index;
+    std::unordered_map<std::string, std::vector<std::string>> kinds; // per type: ancestors()
     for (const auto& o : objects) {
         index[o.name] = ents.size();
-        ents.push_back(add_entity(im, *x, {o.type}, o.name, true));
+        auto [k, fresh] = kinds.try_emplace(o.type);
+        if (fresh) {
+            k->second = ancestors(im.pddl_domain, {o.type});
+        }
+        ents.push_back(add_entity(im, *x, k->second, o.name, true));
     }
     std::set<Fact> facts;
     for (const auto& a : atoms) {
