@@ -354,7 +354,7 @@ private:
 
     // The same name in a target state z (one a repair reaches from Y_{i-1}).
     std::string created_name(NamedState& z, ObId ob, std::size_t i) {
-        return z.fresh_name(ob, fmt::format("{}@{}", lowercase(f_.target()->ob(ob).name), i + 1));
+        return z.fresh_name(ob, step_name(target_prefixes_, *f_.target(), ob, i));
     }
 
     // Applies the source step, naming a created part after its generator in the rule, or after
@@ -364,10 +364,22 @@ private:
         return x_->apply(rule, m, [&](ObId ob, Part q) {
             std::string base(rule.R.part_name(ob, q));
             if (base.empty()) {
-                base = fmt::format("{}@{}", lowercase(problem_.domain->schema->ob(ob).name), i + 1);
+                base = step_name(source_prefixes_, *problem_.domain->schema, ob, i);
             }
             return x_->fresh_name(ob, base);
         });
+    }
+
+    // ob's name in lower case, '@' and step i's number (clear@2); `prefixes` keeps the part
+    // before the number, per object, for the next step (names are made at every step).
+    static std::string step_name(std::vector<std::string>& prefixes, const schema::Schema& s,
+                                 ObId ob, std::size_t i) {
+        prefixes.resize(s.num_obs());
+        std::string& prefix = prefixes[ob.index()];
+        if (prefix.empty()) {
+            prefix = lowercase(s.ob(ob).name) + "@";
+        }
+        return prefix + std::to_string(i + 1);
     }
 
     // Step i with the target's own actions (correspond.hpp): the corresponding target action at
@@ -552,6 +564,7 @@ private:
     std::optional<DivergenceCheck> check_;
     std::optional<Repairer> repairer_;
     std::map<std::string, ActionPair, std::less<>> actions_;
+    std::vector<std::string> source_prefixes_, target_prefixes_; // step_name's
 };
 
 // What makes f conjunctive, named: the first target object sent to a query, hom sent to a
