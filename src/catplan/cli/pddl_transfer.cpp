@@ -6,8 +6,10 @@
 #include "catplan/pddl/costs.hpp"
 #include "catplan/pddl/steps.hpp"
 
+#include <algorithm>
 #include <fmt/format.h>
 #include <iterator>
+#include <string_view>
 
 namespace catplan::cli {
 namespace {
@@ -139,6 +141,21 @@ std::string repair_cost_text(const transfer::StepTransfer& step) {
                            : std::string("from the state before it"));
 }
 
+// Pads the line that starts at `start` of o with spaces to `width` columns, as fmt's {:<width}
+// does: an ASCII line by its bytes, any other as fmt measures it (by code points).
+void pad_line(std::string& o, std::size_t start, std::size_t width) {
+    std::string_view line(o.data() + start, o.size() - start);
+    bool ascii = std::all_of(line.begin(), line.end(),
+                             [](char c) { return static_cast<unsigned char>(c) < 0x80; });
+    if (!ascii) {
+        std::string padded = fmt::format("{:<{}}", line, width);
+        o.resize(start);
+        o += padded;
+    } else if (line.size() < width) {
+        o.append(width - line.size(), ' ');
+    }
+}
+
 } // namespace
 
 std::string pddl_steps_text(const TransferInputs& in, const transfer::TransferResult& t,
@@ -188,13 +205,19 @@ std::string pddl_steps_text(const TransferInputs& in, const transfer::TransferRe
         for (std::size_t k = 0; k < step.target_steps.size(); ++k) {
             std::string text = ipc != nullptr ? (*ipc)[n].to_string()
                                               : pddl_transfer::ipc_text(st, step.target_steps[k]);
-            std::string line = fmt::format("  {}. {}", ++n, text);
+            std::size_t start = o.size();
+            o += "  ";
+            o += std::to_string(++n);
+            o += ". ";
+            o += text;
             if (k == 0) {
-                fmt::format_to(out, "{:<32} <- {}: {}\n", line, from, how);
-            } else {
-                o += line;
-                o += '\n';
+                pad_line(o, start, 32);
+                o += " <- ";
+                o += from;
+                o += ": ";
+                o += how;
             }
+            o += '\n';
         }
     }
     return o;

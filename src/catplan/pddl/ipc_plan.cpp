@@ -422,11 +422,20 @@ Atom ground(const Action& a, const Atom& atom, const IpcStep& s) {
 }
 
 std::string IpcStep::to_string() const {
-    std::string s = "(" + action;
+    std::size_t n = action.size() + 2;
     for (const auto& a : args) {
-        s += " " + a;
+        n += a.size() + 1;
     }
-    return s + ")";
+    std::string s;
+    s.reserve(n);
+    s += '(';
+    s += action;
+    for (const auto& a : args) {
+        s += ' ';
+        s += a;
+    }
+    s += ')';
+    return s;
 }
 
 std::optional<IpcPlan> parse_ipc_plan(std::uint32_t file, const SourceManager& sources,
