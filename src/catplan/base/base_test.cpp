@@ -1,4 +1,5 @@
 #include "catplan/base/diagnostic.hpp"
+#include "catplan/base/keep.hpp"
 #include "catplan/base/lazy.hpp"
 #include "catplan/base/parallel.hpp"
 #include "catplan/base/process.hpp"
@@ -18,6 +19,19 @@
 
 namespace catplan {
 namespace {
+
+TEST(Keep, AnObjectIsKeptOnlyWhenTheProcessEndsAfterTheCommand) {
+    auto p = std::make_shared<int>(7);
+    std::weak_ptr<int> w = p;
+    keep_until_exit(p);
+    EXPECT_NE(p, nullptr); // left to its owner
+    set_process_ends_after_command(true);
+    keep_until_exit(p);
+    set_process_ends_after_command(false);
+    EXPECT_EQ(p, nullptr);
+    EXPECT_FALSE(w.expired()); // alive in the kept storage, with nothing else owning it
+    EXPECT_EQ(w.use_count(), 1);
+}
 
 TEST(Process, ResidentMemoryFollowsTouchedPages) {
     std::size_t before = resident_bytes();

@@ -3,6 +3,7 @@
 
 #include "catplan/acset/printer.hpp"
 #include "catplan/base/assert.hpp"
+#include "catplan/base/keep.hpp"
 #include "catplan/base/parallel.hpp"
 #include "catplan/cli/commands.hpp"
 #include "catplan/cli/common.hpp"
@@ -423,7 +424,11 @@ int cmd_transfer(const TransferCommandArgs& a, std::ostream& out, std::ostream& 
         outputs.push_back({text, a.output});
     }
     int rc = emit(outputs, out, err);
-    return rc != kOk ? rc : transfer_exit_code(r, checked);
+    rc = rc != kOk ? rc : transfer_exit_code(r, checked);
+    // When the process ends now, its exit frees the states, domains and plans (base/keep.hpp).
+    keep_until_exit(r);
+    keep_until_exit(in);
+    return rc;
 }
 
 // Many plans at once: every plan transferred on the same map and problem, one report line (or JSON
