@@ -303,11 +303,16 @@ void search_task(const Task& task, const SearchOptions& options, Budget& budget,
         std::optional<ACSet> last;
         auto plan = to_dpo_plan(task, runner.best(), &last);
         const Problem& problem = *task.problem;
+        // Each step was checked at the match the search chose; a caller that replays the steps
+        // itself need not have the plan's text replayed here too (SearchOptions::validate).
+        auto check = [&] {
+            Validation unchecked;
+            unchecked.valid = true;
+            return options.validate ? validate_plan(problem, *plan) : unchecked;
+        };
         if (!plan) {
             out.rejected = plan.error();
-        } else if (!options.validate) {
-            r.plan = std::move(*plan); // each step was checked at the match the search chose
-        } else if (auto v = validate_plan(problem, *plan); v.valid) {
+        } else if (auto v = check(); v.valid) {
             r.plan = std::move(*plan);
         } else if (v.ambiguous && (!problem.goal || embed_goal(*problem.goal, *last))) {
             // The replay applied each step with the match the search chose (each checked by
