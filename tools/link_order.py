@@ -10,7 +10,7 @@ the order of this file, they take fewer pages: the 30-block PDDL transfer of ben
 faults on a third fewer. The jobs, each run once under valgrind's callgrind (Debian's valgrind,
 needed only to write this file), in this order: the PDDL transfers of examples/pddl/blocks both
 ways, the case study's transfer, then what `make demo` and a planning user run. A job's functions
-that an earlier job did not run follow that job's predecessors'.
+that an earlier job did not run follow that job's predecessors', sorted by name.
 
 The file is data, not a build input that must be exact: the linker skips a name that no longer
 exists and links a function that the file does not name after the named ones. Write it again
@@ -89,7 +89,9 @@ def main():
                                cwd=ROOT, capture_output=True, text=True)
             if r.returncode != 0:
                 sys.exit(f"link_order: catplan {' '.join(job)}: exit {r.returncode}\n{r.stderr[-800:]}")
-            new = [n for n in functions_run(profile, binary) if n not in seen]
+            # By name within a job: the set is what keeps its code together, and the file's
+            # diff then shows what a change added or removed.
+            new = sorted(set(functions_run(profile, binary)) - seen)
             seen.update(new)
             order += new
             print(f"{len(new):5d} functions first run by catplan {' '.join(job)[:70]}")
