@@ -5,17 +5,18 @@ the order in which the release build links them (CATPLAN_LINK_ORDER, src/catplan
     tools/link_order.py [--catplan build/release/src/catplan/cli/catplan] [--out cmake/catplan.order]
 
 The kernel maps a program's code as it first runs, a fault at a time (64 KiB around each), and
-the code a short command runs is spread over the 5 MB of the command. Linked one after another, in
-the order of this file, they take fewer pages: the 30-block PDDL transfer of bench/RESULTS.md
-faults on a third fewer. The jobs, each run once under valgrind's callgrind (Debian's valgrind,
-needed only to write this file), in this order: the PDDL transfers of examples/pddl/blocks both
-ways, the case study's transfer, then what `make demo` and a planning user run. A job's functions
-that an earlier job did not run follow that job's predecessors', sorted by name.
+the code a short command runs is spread over the 4.6 MB of the command's code. Linked one after
+another, in the order of this file, they take fewer pages: the 30-block PDDL transfer of
+bench/RESULTS.md faults on a quarter fewer. The jobs, each run once under valgrind's callgrind
+(Debian's valgrind, needed only to write this file), in this order: the PDDL transfers of
+examples/pddl/blocks both ways, the case study's transfer, then what `make demo` and a planning
+user run. A job's functions that an earlier job did not run follow that job's predecessors',
+sorted by name.
 
 The file is data, not a build input that must be exact: the linker skips a name that no longer
 exists and links a function that the file does not name after the named ones. Write it again
-after a change that renames or moves much of a job's code (the script prints how many of the
-names the command still has).
+after a change that renames or moves much of a job's code (the script first prints how many of
+the present file's names the command still has).
 """
 import argparse
 import os
@@ -80,6 +81,13 @@ def main():
     ap.add_argument("--out", default=str(ROOT / "cmake/catplan.order"))
     a = ap.parse_args()
     binary = os.path.realpath(a.catplan)
+    out = pathlib.Path(a.out)
+    if out.exists():
+        symbols = set(subprocess.run(["nm", "--defined-only", "--format=just-symbols", binary],
+                                     capture_output=True, text=True, check=True).stdout.split())
+        names = out.read_text().split()
+        kept = sum(n in symbols for n in names)
+        print(f"{kept} of the {len(names)} names of {out} are functions of the command")
     order, seen = [], set()
     with tempfile.TemporaryDirectory() as tmp:
         for i, job in enumerate(jobs(tmp)):
@@ -97,8 +105,8 @@ def main():
             print(f"{len(new):5d} functions first run by catplan {' '.join(job)[:70]}")
     # Names only: lld reads one symbol a line, and a name of no symbol is skipped.
     names = [n for n in order if re.fullmatch(r"[A-Za-z_][A-Za-z0-9_.$]*", n)]
-    pathlib.Path(a.out).write_text("".join(f"{n}\n" for n in names))
-    print(f"{len(names)} functions written to {a.out}")
+    out.write_text("".join(f"{n}\n" for n in names))
+    print(f"{len(names)} functions written to {out}")
 
 
 if __name__ == "__main__":
