@@ -4,9 +4,11 @@
 
 #include <algorithm>
 #include <fmt/format.h>
+#include <optional>
 #include <unicode/uchar.h>
 #include <unicode/utf8.h>
 #include <unicode/uvernum.h>
+#include <utility>
 #include <vector>
 
 // A macro's value as a string literal (two steps, so that the macro is expanded first).
@@ -69,19 +71,29 @@ CodePoint decode_utf8(std::string_view text, std::size_t i) {
     return {static_cast<char32_t>(value), used, true};
 }
 
-bool is_valid_utf8(std::string_view text) {
-    for (std::size_t i = 0; i < text.size();) {
+namespace {
+
+// The first ill-formed sequence of text at or after byte i, as [begin, end); nullopt if none.
+std::optional<std::pair<std::size_t, std::size_t>> next_ill_formed(std::string_view text,
+                                                                   std::size_t i) {
+    while (i < text.size()) {
         if (static_cast<unsigned char>(text[i]) < 0x80) {
             ++i; // ASCII, most of any source text
             continue;
         }
         CodePoint cp = decode_utf8(text, i);
         if (!cp.valid) {
-            return false;
+            return std::pair{i, i + cp.length};
         }
         i += cp.length;
     }
-    return true;
+    return std::nullopt;
+}
+
+} // namespace
+
+bool is_valid_utf8(std::string_view text) {
+    return !next_ill_formed(text, 0);
 }
 
 bool is_identifier_start(char32_t c) {
@@ -108,22 +120,14 @@ bool check_utf8(const SourceManager& sources, std::uint32_t file, DiagnosticSink
     constexpr std::size_t kShown = 10;
     std::string_view text = sources.text(file);
     std::vector<SourceRange> bad;
-    for (std::size_t i = 0; i < text.size();) {
-        if (static_cast<unsigned char>(text[i]) < 0x80) {
-            ++i; // ASCII, most of any source text
-            continue;
+    for (auto seq = next_ill_formed(text, 0); seq; seq = next_ill_formed(text, seq->second)) {
+        auto b = static_cast<std::uint32_t>(seq->first);
+        auto e = static_cast<std::uint32_t>(seq->second);
+        if (!bad.empty() && bad.back().end == b) {
+            bad.back().end = e; // neighbouring ill-formed bytes are one problem
+        } else {
+            bad.push_back({file, b, e});
         }
-        CodePoint cp = decode_utf8(text, i);
-        if (!cp.valid) {
-            auto b = static_cast<std::uint32_t>(i);
-            auto e = static_cast<std::uint32_t>(i + cp.length);
-            if (!bad.empty() && bad.back().end == b) {
-                bad.back().end = e; // neighbouring ill-formed bytes are one problem
-            } else {
-                bad.push_back({file, b, e});
-            }
-        }
-        i += cp.length;
     }
     for (std::size_t k = 0; k < bad.size() && k < kShown; ++k) {
         sink.error(bad[k], "invalid UTF-8: the file must be UTF-8 text");
