@@ -18,7 +18,8 @@ target domain, whole process, writing the target IPC plan (-o) and the target pr
 process. Both tools write their plans to files that do not exist before the run (the previous run's
 are removed, untimed). VAL checks the source plan, the transferred plan and FD's target plan on
 their own domain files. Prints, per direction and size, the medians of --transfer-runs runs of the
-transfer and of --runs runs of replanning (and FD's own search time, from its log), their ratios
+transfer and of --runs runs of replanning, the two spread over the same stretch of time (and FD's
+own search time, from its log), their ratios
 and the plan lengths, the start-up floor of the harness (a process that does nothing, and
 `catplan --version`, timed the same way), and the load average of the machine before and after.
 Each run is timed whole, wall and CPU (user + system of the process and its children): on a shared
@@ -130,23 +131,26 @@ def one_size(a, direction, n, out):
         return None
     target_plan, target_problem, fd_plan = d / "target.plan", d / "target.pddl", d / "fd_target.plan"
     transfer_s, transfer_cpu, replan_s, replan_cpu, search_s = [], [], [], [], []
-    for i in range(max(a.runs, a.transfer_runs)):
-        if i < a.transfer_runs:
-            # As FD's plan file is (fd()), the transfer's outputs are removed before its run, so
-            # that each tool writes new files: on ext4 replacing a file costs more than writing
-            # a new one (bench/RESULTS.md), and the VAL check sees this run's plan.
-            for f in (target_plan, target_problem):
-                f.unlink(missing_ok=True)
-            t, r = timed(transfer_cmd(a.catplan, map_file, map_name, problem, splan,
-                                      ["-o", str(target_plan), "--problem-output",
-                                       str(target_problem)]), a.limit)
-            if r.returncode != 0:
-                print(f"{d.name}: transfer exit {r.returncode}: {r.stdout[-400:]}{r.stderr[-400:]}",
-                      file=sys.stderr)
-                return None
-            transfer_s.append(t)
-            transfer_cpu.append(r.cpu)
-        if i < a.runs:
+    # The transfer's runs are spread evenly between FD's (with 25 and 5: five transfers, then one
+    # FD run, five times over), so that both medians sample the same stretch of time: a shared
+    # machine has phases of a second or so in which every process runs slower, and 25 transfers
+    # back to back fit in one.
+    for i in range(a.transfer_runs):
+        # As FD's plan file is (fd()), the transfer's outputs are removed before its run, so that
+        # each tool writes new files: on ext4 replacing a file costs more than writing a new one
+        # (bench/RESULTS.md), and the VAL check sees this run's plan.
+        for f in (target_plan, target_problem):
+            f.unlink(missing_ok=True)
+        t, r = timed(transfer_cmd(a.catplan, map_file, map_name, problem, splan,
+                                  ["-o", str(target_plan), "--problem-output",
+                                   str(target_problem)]), a.limit)
+        if r.returncode != 0:
+            print(f"{d.name}: transfer exit {r.returncode}: {r.stdout[-400:]}{r.stderr[-400:]}",
+                  file=sys.stderr)
+            return None
+        transfer_s.append(t)
+        transfer_cpu.append(r.cpu)
+        while len(replan_s) < (i + 1) * a.runs // a.transfer_runs:
             t, r = fd(a.peers, BLOCKS / tgt_dom, target_problem, fd_plan, a.limit)
             replan_s.append(t)
             replan_cpu.append(r.cpu)
@@ -218,6 +222,8 @@ def main():
     p.add_argument("--batch", type=int, default=0)
     p.add_argument("--limit", type=int, default=900)
     a = p.parse_args()
+    if a.runs < 1 or a.transfer_runs < 1:
+        p.error("--runs and --transfer-runs must be at least 1")
     load_before = os.getloadavg()
     floors = [start_floor(a)]
     rows = [r for direction in a.directions.split(",") for n in map(int, a.blocks.split(","))
