@@ -4,8 +4,10 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <ctime>
 #include <fcntl.h>
 #include <random>
+#include <sys/random.h>
 #include <sys/stat.h>
 #include <unistd.h>
 #include <utility>
@@ -74,11 +76,20 @@ bool write_all(int fd, std::string_view contents) {
     return true;
 }
 
+// A seed for the temporary names: the kernel's random bytes (std::random_device asks the CPU
+// first, which traps to the hypervisor in a virtual machine), else the process id and the time.
+unsigned seed() {
+    unsigned s = 0;
+    if (::getrandom(&s, sizeof s, GRND_NONBLOCK) == static_cast<ssize_t>(sizeof s)) {
+        return s;
+    }
+    return static_cast<unsigned>(::getpid()) ^ static_cast<unsigned>(::time(nullptr));
+}
+
 // A new file in the target's directory, named after it; created with O_EXCL so that it is ours,
 // with mode 0666 so that the umask (and a default ACL) applies as to any new file.
 int create_temporary(const std::string& target, std::string& name) {
-    static std::minstd_rand random(static_cast<unsigned>(std::random_device{}()) ^
-                                   static_cast<unsigned>(::getpid()));
+    static std::minstd_rand random(seed());
     static constexpr char kDigits[] = "0123456789abcdefghijklmnopqrstuvwxyz";
     for (int attempt = 0; attempt < 100; ++attempt) {
         name = target + ".tmp.";
