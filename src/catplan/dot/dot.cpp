@@ -1,5 +1,6 @@
 #include "catplan/dot/dot.hpp"
 
+#include "catplan/base/ascii.hpp"
 #include "catplan/base/assert.hpp"
 #include "catplan/base/escape.hpp"
 #include "catplan/dot/detail/panel.hpp"
@@ -28,10 +29,7 @@ std::string dot_id(std::string_view s) {
         return is_letter(c) || is_digit(c);
     });
     if (bare) {
-        std::string lower(s);
-        std::transform(lower.begin(), lower.end(), lower.begin(),
-                       [](char c) { return c >= 'A' && c <= 'Z' ? char(c - 'A' + 'a') : c; });
-        bare = std::find(kKeywords.begin(), kKeywords.end(), lower) == kKeywords.end();
+        bare = std::find(kKeywords.begin(), kKeywords.end(), ascii_lowercase(s)) == kKeywords.end();
     }
     return bare ? std::string(s) : "\"" + escape_quoted(s) + "\"";
 }

@@ -5,6 +5,7 @@
 // name the target action of source actions in an `actions` section and the source function whose
 // values a target function takes in a `functions` section.
 
+#include "catplan/base/ascii.hpp"
 #include "catplan/lang/detail/elaboration.hpp"
 #include "catplan/lang/detail/elaborator.hpp"
 #include "catplan/lang/detail/map_elaboration.hpp"
@@ -51,7 +52,7 @@ std::string pddl_kind(std::string_view text) {
         std::string w;
         while (i < text.size() && (std::isalnum(static_cast<unsigned char>(text[i])) ||
                                    text[i] == '-' || text[i] == '_')) {
-            w += static_cast<char>(std::tolower(static_cast<unsigned char>(text[i++])));
+            w += ascii_lower(text[i++]);
         }
         return w;
     };
@@ -67,10 +68,7 @@ std::string pddl_kind(std::string_view text) {
 
 /// The name after `(:domain` in a problem's text, lower-cased ("" if there is none).
 std::string problem_domain(std::string_view text) {
-    std::string lowered(text);
-    for (auto& c : lowered) {
-        c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    }
+    std::string lowered = ascii_lowercase(text);
     std::size_t i = lowered.find("(:domain");
     if (i == std::string::npos) {
         return "";

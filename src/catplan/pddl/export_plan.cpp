@@ -1,13 +1,13 @@
 // Plans between catplan and an export: a catplan plan in the export's objects and actions, and an
 // IPC plan of the export back as a catplan plan (export.hpp).
 
+#include "catplan/base/ascii.hpp"
 #include "catplan/pddl/detail/export_writer.hpp"
 #include "catplan/pddl/export.hpp"
 #include "catplan/plan/validate.hpp"
 #include "catplan/rewrite/dpo.hpp"
 
 #include <algorithm>
-#include <cctype>
 #include <fmt/format.h>
 
 namespace catplan::pddl {
@@ -16,12 +16,6 @@ namespace {
 
 using detail::NameSet;
 using detail::Things;
-
-std::string lowered(std::string s) {
-    std::transform(s.begin(), s.end(), s.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    return s;
-}
 
 /// The reading and marker shapes of the export's domain and problem.
 Result<std::unique_ptr<detail::Writer>> writer_for(const Exported& ex) {
@@ -54,12 +48,12 @@ Result<std::string> object_name(const detail::Writer& w, const acset::ACSet& x, 
         return fail(fmt::format("{} binds the {} marker, which the export does not express", step,
                                 t.shape));
     }
-    return lowered(t.name);
+    return ascii_lowercase(t.name);
 }
 
 const Exported::Action* find_action(const Exported& ex, std::string_view name) {
     for (const auto& a : ex.actions) {
-        if (lowered(a.name) == lowered(std::string(name))) {
+        if (ascii_lowercase(a.name) == ascii_lowercase(name)) {
             return &a;
         }
     }
@@ -192,7 +186,7 @@ Result<IpcPlan> to_exported_plan(const Exported& ex, const plan::Plan& given) {
             return fail(fmt::format("step {} {}: the export has no one-rule action for it", i + 1,
                                     step.to_string()));
         }
-        IpcStep s{lowered(a->name), {}, {}};
+        IpcStep s{ascii_lowercase(a->name), {}, {}};
         for (auto [ob, p] : a->params) {
             auto name = object_name(**w, r->states[i], ob, r->matches[i](ob, p),
                                     fmt::format("step {} {}", i + 1, step.to_string()));
@@ -204,7 +198,7 @@ Result<IpcPlan> to_exported_plan(const Exported& ex, const plan::Plan& given) {
         out.push_back(std::move(s));
     }
     if (!ex.goal_action.empty()) {
-        IpcStep s{lowered(ex.goal_action), {}, {}};
+        IpcStep s{ascii_lowercase(ex.goal_action), {}, {}};
         for (auto [ob, p] : ex.goal_params) {
             auto name = object_name(**w, r->states.back(), ob, r->goal(ob, p), "the goal");
             if (!name) {
@@ -231,13 +225,14 @@ Result<plan::Plan> from_exported_plan(const Exported& ex, const IpcPlan& plan) {
     std::map<std::string, std::size_t> by_name;
     for (std::size_t i = 0; i < things->things.size(); ++i) {
         if (!things->things[i].marker) {
-            by_name[lowered(things->things[i].name)] = i;
+            by_name[ascii_lowercase(things->things[i].name)] = i;
         }
     }
     plan::Plan out;
     for (std::size_t i = 0; i < plan.size(); ++i) {
         const IpcStep& s = plan[i];
-        if (!ex.goal_action.empty() && lowered(s.action) == lowered(ex.goal_action)) {
+        if (!ex.goal_action.empty() &&
+            ascii_lowercase(s.action) == ascii_lowercase(ex.goal_action)) {
             if (i + 1 != plan.size()) {
                 return fail(fmt::format("step {} {}: the goal action is not the last step", i + 1,
                                         s.to_string()));
@@ -272,7 +267,7 @@ Result<plan::Plan> from_exported_plan(const Exported& ex, const IpcPlan& plan) {
                     index = j;
                 }
             }
-            auto it = index ? by_name.find(lowered(s.args[*index])) : by_name.end();
+            auto it = index ? by_name.find(ascii_lowercase(s.args[*index])) : by_name.end();
             Part part =
                 it == by_name.end() ? kNoPart : things->things[it->second].part[param.ob.index()];
             if (part == kNoPart || x.part_name(param.ob, part).empty()) {

@@ -1,5 +1,6 @@
 #include "catplan/pddl/ipc_plan.hpp"
 
+#include "catplan/base/ascii.hpp"
 #include "catplan/base/unicode.hpp"
 #include "catplan/pddl/costs.hpp"
 #include "catplan/pddl/steps.hpp"
@@ -16,14 +17,6 @@
 namespace catplan::pddl {
 
 namespace {
-
-std::string lower(std::string_view s) {
-    std::string out(s);
-    for (auto& c : out) {
-        c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    }
-    return out;
-}
 
 // Reads the IPC plan lines: `[T:] (action object ...) [[D]]`, `;` comments, blank lines.
 class IpcReader {
@@ -183,7 +176,7 @@ private:
                     fmt::format("expected an object name or ')' in a step, found '{}'", text_[i_]));
                 return false;
             }
-            std::string word = lower(text_.substr(i_, e - i_));
+            std::string word = ascii_lowercase(text_.substr(i_, e - i_));
             if (step_.action.empty()) {
                 step_.action = std::move(word);
                 step_.action_range = range(i_, e);

@@ -2,6 +2,7 @@
 
 #include "catplan/pddl/detail/reader.hpp"
 
+#include "catplan/base/ascii.hpp"
 #include "catplan/base/unicode.hpp"
 
 #include <algorithm>
@@ -81,7 +82,7 @@ private:
         }
         if (text_[i_] != '(') {
             while (i_ < text_.size() && !ends_token(start)) {
-                e.atom += static_cast<char>(std::tolower(static_cast<unsigned char>(text_[i_])));
+                e.atom += ascii_lower(text_[i_]);
                 ++i_;
             }
             e.range = range(start, i_);

@@ -1,5 +1,7 @@
 #include "catplan/transfer/rename.hpp"
 
+#include "catplan/base/ascii.hpp"
+
 #include <cctype>
 #include <fmt/format.h>
 #include <map>
@@ -18,17 +20,9 @@ std::string first_word(std::string_view ob_name) {
         if (i > 0 && std::isupper(c)) {
             break;
         }
-        out.push_back(static_cast<char>(std::tolower(c)));
+        out.push_back(ascii_lower(static_cast<char>(c)));
     }
     return out.empty() ? std::string(ob_name) : out;
-}
-
-std::string lowercase(std::string_view text) {
-    std::string out(text);
-    for (auto& c : out) {
-        c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    }
-    return out;
 }
 
 // How many is-a homs leave the part named `name` of ob for a part of the same name.
@@ -91,7 +85,7 @@ Renaming names_by_type(const ACSet& y) {
     for (const auto& [key, name] : by_part) {
         // A subtype (BreadSliced, with is-a homs) is called by its first word, others in full.
         const std::string& ob_name = s.ob(ObId(key.first)).name;
-        std::string base = best.at(name).is_a > 0 ? first_word(ob_name) : lowercase(ob_name);
+        std::string base = best.at(name).is_a > 0 ? first_word(ob_name) : ascii_lowercase(ob_name);
         out.emplace(name, fmt::format("{}{}", base, ++counters[base]));
     }
     return out;

@@ -1,5 +1,6 @@
 #include "catplan/transfer/transfer.hpp"
 
+#include "catplan/base/ascii.hpp"
 #include "catplan/base/process.hpp"
 #include "catplan/migrate/migration.hpp"
 #include "catplan/plan/costs.hpp"
@@ -13,7 +14,6 @@
 #include "catplan/transfer/terms.hpp"
 
 #include <algorithm>
-#include <cctype>
 #include <chrono>
 #include <fmt/format.h>
 #include <functional>
@@ -28,14 +28,6 @@ using Clock = std::chrono::steady_clock;
 
 double ms_since(Clock::time_point t0) {
     return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
-}
-
-std::string lowercase(std::string_view text) {
-    std::string out(text);
-    for (auto& c : out) {
-        c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    }
-    return out;
 }
 
 // Names every unnamed part after its label (#7), so that names can follow every part.
@@ -377,7 +369,7 @@ private:
         prefixes.resize(s.num_obs());
         std::string& prefix = prefixes[ob.index()];
         if (prefix.empty()) {
-            prefix = lowercase(s.ob(ob).name) + "@";
+            prefix = ascii_lowercase(s.ob(ob).name) + "@";
         }
         return prefix + std::to_string(i + 1);
     }

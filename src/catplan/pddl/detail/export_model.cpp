@@ -1,5 +1,6 @@
 #include "catplan/pddl/detail/export_model.hpp"
 
+#include "catplan/base/ascii.hpp"
 #include "catplan/base/union_find.hpp"
 
 #include <algorithm>
@@ -19,19 +20,10 @@ std::string pddl_name(std::string_view s, std::string_view fallback) {
     return out;
 }
 
-namespace {
-
-std::string lowered(std::string_view s) {
-    std::string out(s);
-    std::transform(out.begin(), out.end(), out.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    return out;
-}
-
-} // namespace
+namespace {} // namespace
 
 bool NameSet::taken(std::string_view name) const {
-    return lowered_.count(lowered(name)) != 0;
+    return lowered_.count(ascii_lowercase(name)) != 0;
 }
 
 std::string NameSet::take(std::string_view want) {
@@ -39,7 +31,7 @@ std::string NameSet::take(std::string_view want) {
     for (int k = 2; taken(name); ++k) {
         name = fmt::format("{}_{}", want, k);
     }
-    lowered_.insert(lowered(name));
+    lowered_.insert(ascii_lowercase(name));
     return name;
 }
 
