@@ -1,3 +1,4 @@
+#include "catplan/base/ascii.hpp"
 #include "catplan/base/diagnostic.hpp"
 #include "catplan/base/keep.hpp"
 #include "catplan/base/lazy.hpp"
@@ -19,6 +20,14 @@
 
 namespace catplan {
 namespace {
+
+TEST(Ascii, LowercaseChangesOnlyCapitalLetters) {
+    EXPECT_EQ(ascii_lowercase("Pick-UP b_1 (:Domain)"), "pick-up b_1 (:domain)");
+    // UTF-8's bytes (É is C3 89) and the characters around A-Z in ASCII ('@', '[') are kept.
+    EXPECT_EQ(ascii_lowercase("\xC3\x89t@[Z]"), "\xC3\x89t@[z]");
+    EXPECT_EQ(ascii_lowercase(""), "");
+    static_assert(ascii_lower('A') == 'a' && ascii_lower('Z') == 'z' && ascii_lower('a') == 'a');
+}
 
 TEST(Keep, AnObjectIsKeptOnlyWhenTheProcessEndsAfterTheCommand) {
     auto p = std::make_shared<int>(7);
