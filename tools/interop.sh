@@ -25,11 +25,13 @@ if [ ! -x "$catplan" ]; then
     echo "interop: no catplan at $catplan (build it: cmake --build --preset release --target catplan)" >&2
     exit 2
 fi
+# Absolute: Fast Downward runs in the work directory (it writes sas_plan where it runs).
+PEERS=$(cd "$PEERS" && pwd)
 fd=$PEERS/bin/fast-downward
 val=$PEERS/bin/validate
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-cd "$root"
+cd "$root" || exit 2
 
 # name | file | export options | a catplan plan of the problem (after --map, the source's plan:
 # a migrated rule keeps its name and its parameters' names), `transfer` for the case study's
