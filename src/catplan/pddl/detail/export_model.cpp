@@ -20,8 +20,6 @@ std::string pddl_name(std::string_view s, std::string_view fallback) {
     return out;
 }
 
-namespace {} // namespace
-
 bool NameSet::taken(std::string_view name) const {
     return lowered_.count(ascii_lowercase(name)) != 0;
 }
