@@ -18,6 +18,7 @@ struct PyPddlStep {
     py::list target;  // the target steps, (action, [args]) each
     std::optional<std::string> action;
     std::optional<std::size_t> repair_reused_from;
+    bool repair_from_action = false;
     std::size_t expanded = 0;
     std::optional<std::int64_t> repair_cost;
     bool repair_least_cost = false;
@@ -126,6 +127,7 @@ std::vector<PyPddlStep> pddl_steps(const PyPddlTransfer& r) {
             p.action = st.actions->name_of(s.target.action);
         }
         p.repair_reused_from = s.repair_reused_from;
+        p.repair_from_action = s.repair_from_action;
         p.expanded = s.repair_stats.expanded;
         p.repair_cost = s.repair_cost;
         p.repair_least_cost = s.repair_least_cost;
@@ -171,6 +173,9 @@ void bind_step(py::module_& m) {
                       "The target action that corresponds (None unless kind is 'corresponds').")
         .def_readonly("repair_reused_from", &PyPddlStep::repair_reused_from,
                       "The earlier step (0-based) whose repair was renamed for this one, or None.")
+        .def_readonly("repair_from_action", &PyPddlStep::repair_from_action,
+                      "Whether the repair was found by a search from the migrated action's own "
+                      "sides (its left side to its right side), no other part of the state.")
         .def_readonly("expanded", &PyPddlStep::expanded,
                       "States the repair's search expanded (0 when none ran).")
         .def_readonly("repair_cost", &PyPddlStep::repair_cost,

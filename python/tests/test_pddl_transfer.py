@@ -23,6 +23,8 @@ def test_moves_are_repaired_into_four_operator_steps(blocks, source_dir):
     assert [s.kind for s in r.steps] == ["repaired"] * 3
     assert r.steps[0].source == ("move-to-table", ["a", "b"])
     assert r.steps[0].target == [("unstack", ["a", "b"]), ("put-down", ["a"])]
+    # Each move is its action's first: found from the migrated action's own sides.
+    assert all(s.repair_from_action and s.repair_reused_from is None for s in r.steps)
     assert r.target_plan == [t for s in r.steps for t in s.target]
     assert len(r.target_plan) == 6
     assert r.plan_text.rstrip().endswith("; cost = 6 (unit cost)")

@@ -192,8 +192,10 @@ std::string pddl_steps_text(const TransferInputs& in, const transfer::TransferRe
                 step.target_steps.size() == 1 ? "" : "s",
                 step.repair_reused_from
                     ? fmt::format("step {}'s repair, renamed", *step.repair_reused_from + 1)
-                    : fmt::format("{} state{} expanded", step.repair_stats.expanded,
-                                  step.repair_stats.expanded == 1 ? "" : "s"),
+                    : fmt::format(
+                          "{}{} state{} expanded",
+                          step.repair_from_action ? "from its migrated action's sides, " : "",
+                          step.repair_stats.expanded, step.repair_stats.expanded == 1 ? "" : "s"),
                 repair_cost_text(step));
             break;
         }

@@ -157,6 +157,7 @@ nlohmann::ordered_json steps_json(const TransferInputs& in, const transfer::Tran
             out.back()["repair"] = {
                 {"expanded", st.repair_stats.expanded},
                 {"focus_parts", st.repair_focus},
+                {"from_action", st.repair_from_action},
                 {"reused_from", st.repair_reused_from
                                     ? nlohmann::ordered_json(*st.repair_reused_from + 1)
                                     : nlohmann::ordered_json(nullptr)},

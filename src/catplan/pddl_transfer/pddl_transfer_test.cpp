@@ -97,6 +97,44 @@ TEST(PddlTransfer, ThreeOperatorMovesAreRepairedIntoFourOperatorSteps) {
     EXPECT_TRUE(c.ok(t));
 }
 
+TEST(PddlTransfer, AnActionsFirstRepairIsSearchedOnItsMigratedActionsOwnSides) {
+    // Each of the three moves is its action's first step: a breadth-first search from the
+    // migrated action's left side (the blocks it names, with their names) to its right side
+    // finds the two 4-operator steps; no focus of the state is built.
+    Loaded l("blocks/three_to_four.cp");
+    auto s = l.setting("ThreeToFour", "blocks/p01-3.pddl");
+    ASSERT_TRUE(s.has_value()) << l.sink.render();
+    auto [t, c] = run(*s, l.plan(*s, "blocks/p01-3.plan"));
+    ASSERT_TRUE(t.verdict.valid()) << t.verdict.reason();
+    ASSERT_EQ(t.steps.size(), 3U);
+    std::vector<std::string> first;
+    for (const auto& st : t.steps) {
+        EXPECT_TRUE(st.repair_from_action);
+        EXPECT_EQ(st.repair_focus, 0U);
+        EXPECT_FALSE(st.repair_reused_from.has_value());
+        EXPECT_GE(st.repair_stats.expanded, 1U);
+        first.push_back(st.target_steps.at(0).action);
+    }
+    EXPECT_EQ(actions_of(c), (std::vector<std::string>{"unstack", "put-down", "unstack", "stack",
+                                                       "pick-up", "stack"}));
+    EXPECT_TRUE(c.validation.has_value() && c.validation->valid);
+
+    // The other way, Δ_F(stack b a) takes the block from the gripper, which the 3-operator world
+    // does not see: from its sides alone nothing reaches its effect, and the focus of the state
+    // (where b is on the table) gives move-from-table.
+    Loaded back("blocks/four_to_three.cp");
+    auto s4 = back.setting("FourToThree", "blocks/p01-4.pddl");
+    ASSERT_TRUE(s4.has_value()) << back.sink.render();
+    auto [t4, c4] = run(*s4, back.plan(*s4, "blocks/p01-4.plan"));
+    ASSERT_TRUE(t4.verdict.valid()) << t4.verdict.reason();
+    ASSERT_GE(t4.steps.size(), 4U);
+    EXPECT_EQ(t4.steps[3].source.action, "stack");
+    EXPECT_FALSE(t4.steps[3].repair_from_action);
+    EXPECT_GT(t4.steps[3].repair_focus, 0U);
+    ASSERT_EQ(t4.steps[3].target_steps.size(), 1U);
+    EXPECT_EQ(t4.steps[3].target_steps[0].action, "move-from-table");
+}
+
 TEST(PddlTransfer, ActionsOfADeltaMapCorrespondAndTheUsersProblemIsCompared) {
     Loaded l("warehouse/hospital_to_warehouse.cp");
     auto s =

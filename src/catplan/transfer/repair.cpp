@@ -81,6 +81,43 @@ bool binds_initial_parts(const plan::Domain& target, const ACSet& initial,
     return true;
 }
 
+// The generated action's left side, each bound part named and valued as its part of y, and its
+// right side, each part it keeps named and valued as on the left (a value the rule computes
+// stays so): the problem of carrying out the generated action alone. The values make the goal's
+// kept parts their namesakes (a block's name is an attribute), not any parts alike.
+std::pair<ACSet, ACSet> generated_sides(const GeneratedStep& g, const NamedState& y) {
+    const rewrite::Rule& rule = *g.rule;
+    const auto& s = rule.K.schema();
+    ACSet left = rule.L, right = rule.R;
+    for (const auto& b : g.bindings) {
+        left.set_part_name(b.ob, b.dom, y.state().part_name(b.ob, b.codom));
+        for (AttrId a : s.attrs_from(b.ob)) {
+            const auto& v = y.state().subpart(a, b.codom);
+            if (v.is_concrete() && !left.subpart(a, b.dom).is_concrete()) {
+                left.set_subpart(a, b.dom, v);
+            }
+        }
+    }
+    for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
+        ObId ob(o);
+        for (Part k = 0; k < rule.K.num_parts(ob); ++k) {
+            Part l = rule.l.components[o][k], r = rule.r.components[o][k];
+            right.set_part_name(ob, r, left.part_name(ob, l));
+            for (AttrId a : s.attrs_from(ob)) {
+                const auto& v = right.subpart(a, r);
+                std::uint32_t t = s.attr(a).codom.index();
+                bool computed = v.is_var() && t < rule.exprs.size() &&
+                                v.var_index() < rule.exprs[t].size() &&
+                                rule.exprs[t][v.var_index()].has_value();
+                if (!v.is_concrete() && !computed && left.subpart(a, l).is_concrete()) {
+                    right.set_subpart(a, r, left.subpart(a, l));
+                }
+            }
+        }
+    }
+    return {std::move(left), std::move(right)};
+}
+
 } // namespace
 
 Repairer::Repairer(plan::DomainPtr target, RepairOptions options,
@@ -151,8 +188,9 @@ void Repairer::recycle(NamedState&& old) {
 }
 
 Repair Repairer::repair(const NamedState& y, const ACSet& subgoal, std::size_t step,
-                        const CreatedName& name, const plan::Step* source) {
-    Request q{y, subgoal, step, name, source};
+                        const CreatedName& name, const plan::Step* source,
+                        const GeneratedStep* generated) {
+    Request q{y, subgoal, step, name, source, generated};
     Repair out;
     if (embeds_by_names(y, subgoal)) {
         out.found = true;
@@ -160,6 +198,10 @@ Repair Repairer::repair(const NamedState& y, const ACSet& subgoal, std::size_t s
         return out;
     }
     if (use_action_repair(q, out)) {
+        return out;
+    }
+    if (generated_repair(q, out)) {
+        remember_action_repair(q, out);
         return out;
     }
     // Every seed, for the focused problems (the check above stopped at the first difference).
@@ -285,6 +327,38 @@ void Repairer::remember_action_repair(const Request& q, const Repair& r) {
     if (!seen) {
         known.push_back(std::move(a));
     }
+}
+
+// Once per source action, for its first step that no earlier repair of the action serves: a
+// plan of target actions from the generated action's left side to its right side (no other part
+// of y), found by a breadth-first search of those few parts, then replayed on y and checked
+// there as a focused plan is. The plan is remembered for the action's later steps.
+bool Repairer::generated_repair(const Request& q, Repair& out) {
+    if (by_cost_ || q.source == nullptr || q.generated == nullptr ||
+        !generated_searched_.insert(q.source->action).second) {
+        return false;
+    }
+    auto [left, right] = generated_sides(*q.generated, q.y);
+    auto p = problem(std::move(left), std::move(right));
+    plan::SearchOptions options = options_.search;
+    options.search = plan::SearchKind::BreadthFirst;
+    options.ground = false;
+    if (options.max_nodes == 0 || options.max_nodes > options_.generated_max_nodes) {
+        options.max_nodes = options_.generated_max_nodes;
+    }
+    auto r = plan::find_plan(*p, options);
+    add_stats(out.stats, r.stats);
+    if (r.status != plan::SearchStatus::Solved || r.plan->steps.empty() ||
+        !binds_initial_parts(*target_, *p->initial, r.plan->steps)) {
+        return false;
+    }
+    auto replayed = replay(*target_, scratch_copy(q.y), r.plan->steps, q.subgoal, true, q.name);
+    if (!replayed) {
+        return false;
+    }
+    take(out, std::move(r.plan->steps), std::move(*scratch_), *replayed, false);
+    out.from_action = true;
+    return true;
 }
 
 bool Repairer::focus_repair(const Request& q, const Focus& focus, Repair& out) {

@@ -10,7 +10,11 @@
 // No step is needed when Y_{i-1} already holds the subgoal by names (focus.hpp: each part that
 // homs point into is its namesake, each fact is found by its arguments). Otherwise the plans that
 // repaired earlier steps of the same source action are tried first, on this step's arguments
-// (ActionRepair below), each replayed and checked as below. Then a repair costs what the step
+// (ActionRepair below), each replayed and checked as below. An action's first step that none
+// serves searches, once, from the generated action's left side to its right side (GeneratedStep:
+// its parts named and valued as the step binds them in Y_{i-1}, no other part), breadth-first;
+// a plan found there is replayed and checked as below, and is remembered for the action's later
+// steps. Then a repair costs what the step
 // touches, not the size of the state: the local plan is searched first on a focus of Y_{i-1} (the
 // parts near what the subgoal changes: radius 0, the seeds alone, then 1, 2 and 4), its goal
 // reached by names, unless a focus of the same shape was searched before in this transfer: its
@@ -25,6 +29,7 @@
 // and time limits; A* with LM-cut, summing the target's costs, where they are known).
 
 #include "catplan/acset/acset.hpp"
+#include "catplan/hom/hom_search.hpp"
 #include "catplan/hom/morphism.hpp"
 #include "catplan/plan/domain.hpp"
 #include "catplan/plan/ground/reuse.hpp"
@@ -39,6 +44,7 @@
 #include <optional>
 #include <string>
 #include <unordered_map>
+#include <unordered_set>
 #include <vector>
 
 namespace catplan::transfer {
@@ -59,6 +65,9 @@ struct RepairOptions {
     /// At most this many expansions on a focus (a focus that needs more is not local, and the
     /// next one, or the whole state, is searched), within the search's own limit.
     std::uint64_t focus_max_nodes = 10000;
+    /// At most this many expansions when the generated action's own sides are searched (a plan
+    /// of a few steps on a few parts: a breadth-first search that needs more is not short).
+    std::uint64_t generated_max_nodes = 16;
     /// Where the target's costs are known (its function values), search each repair with A* and
     /// LM-cut, summing them, for a least-cost repair on the focus or state searched, rather than
     /// with the search above, which counts steps (and which searches the whole state again where A*
@@ -80,6 +89,9 @@ struct Repair {
     /// When found on a focus: how many parts of y it kept (focus.hpp); 0 on the whole state, or
     /// where an earlier step's plan for the same source action was used without a focus.
     std::size_t focus_parts = 0;
+    /// Found by a search from the generated action's left side to its right side (GeneratedStep),
+    /// no other part of y involved.
+    bool from_action = false;
     /// The subgoal embeds in the state the steps reach sending each part that homs point into to
     /// its namesake (else by another monic morphism).
     bool by_names = false;
@@ -93,6 +105,13 @@ struct Repair {
     /// plan of the focus (focus_parts), or of the whole state, reaches the subgoal for less.
     bool least_cost = false;
     std::string why; ///< when not found: "the subgoal is unreachable", "time limit reached"
+};
+
+/// The generated action Δ_F(a) of a source step that no target action carries out, its left
+/// side's parts bound to parts of Y_{i-1} (those the source step's match names there).
+struct GeneratedStep {
+    const rewrite::Rule* rule = nullptr;
+    std::vector<hom::PartBinding> bindings; ///< parts of rule->L to parts of y
 };
 
 /// The name of a part of an object that a repair's step creates, given the state it is created
@@ -112,7 +131,8 @@ public:
     /// the state it reaches, whose created parts `name` names. With the source step itself, a
     /// plan that repaired a step of the same source action is tried first (see below).
     Repair repair(const NamedState& y, const acset::ACSet& subgoal, std::size_t step,
-                  const CreatedName& name, const plan::Step* source = nullptr);
+                  const CreatedName& name, const plan::Step* source = nullptr,
+                  const GeneratedStep* generated = nullptr);
 
     /// Hands back a state the caller is done with (the y a repair's reached state replaced), whose
     /// memory the next replay reuses.
@@ -125,7 +145,8 @@ private:
         const acset::ACSet& subgoal;
         std::size_t step;
         const CreatedName& name;
-        const plan::Step* source; ///< the source step, when the caller gives it
+        const plan::Step* source;       ///< the source step, when the caller gives it
+        const GeneratedStep* generated; ///< its generated action, when the caller gives it
     };
 
     // A plan that repaired a step of one source action, each argument of its steps written as
@@ -143,6 +164,7 @@ private:
     bool use_action_repair(const Request& q, Repair& out);
     void remember_action_repair(const Request& q, const Repair& r);
 
+    bool generated_repair(const Request& q, Repair& out);
     bool focus_repair(const Request& q, const Focus& focus, Repair& out);
     bool use_memo(const Request& q, const RepairMemo& memo, const RepairShape& shape, Repair& out,
                   bool& searched_before);
@@ -184,6 +206,8 @@ private:
     RepairMemo changes_;      ///< the same plans, by the shape of what they change
     /// Without by_cost_: per source action, the plans that repaired its steps (ActionRepair).
     std::unordered_map<std::string, std::vector<ActionRepair>> by_action_;
+    /// The source actions whose generated action's sides were searched (generated_repair).
+    std::unordered_set<std::string> generated_searched_;
     std::optional<NamedState> scratch_; ///< see scratch_copy
 };
 

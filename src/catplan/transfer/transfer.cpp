@@ -394,11 +394,19 @@ private:
         if (!matches.empty() && comparing()) {
             check_->before(m, *x_, matches[0], *y_);
         }
+        // Where nothing corresponds, the generated action bound as the source step binds it
+        // (read before the source step changes X): a repair may start from its sides.
+        std::optional<GeneratedStep> generated;
+        if (matches.empty() && a.target != nullptr) {
+            generated.emplace();
+            generated->rule = a.target;
+            generated->bindings = carried_bindings(a, m, *x_, *y_, renaming_);
+        }
         auto r_to_x = apply_source(i, *a.source, m);
         CATPLAN_ASSERT(r_to_x, "a valid source match failed to apply");
         if (!matches.empty()) {
             corresponding_step(i, a, *c, matches[0], *r_to_x, st);
-        } else if (!repaired_step(i, c, st)) {
+        } else if (!repaired_step(i, c, st, generated ? &*generated : nullptr)) {
             return false;
         }
         st.source_comatch = *r_to_x;
@@ -443,7 +451,8 @@ private:
     }
 
     // A repair: the target's own actions from Y_{i-1} to a state that holds Δ_F(X_i).
-    bool repaired_step(std::size_t i, const Correspondence* c, StepTransfer& st) {
+    bool repaired_step(std::size_t i, const Correspondence* c, StepTransfer& st,
+                       const GeneratedStep* generated) {
         const auto& own = *options_.target_actions;
         ACSet subgoal = migrate::migrate(f_, x_->state());
         rename_parts(subgoal, renaming_);
@@ -452,7 +461,7 @@ private:
         }
         auto repair = repairer_->repair(
             *y_, subgoal, i, [&](NamedState& z, ObId ob) { return created_name(z, ob, i); },
-            &plan_.steps[i]);
+            &plan_.steps[i], generated);
         if (!repair.found) {
             return fail_at(i, fmt::format("{}; repair: {}",
                                           c == nullptr ? "no target action corresponds"
@@ -476,6 +485,7 @@ private:
         st.target_steps = std::move(repair.steps);
         st.repair_stats = repair.stats;
         st.repair_focus = repair.focus_parts;
+        st.repair_from_action = repair.from_action;
         st.repair_reused_from = repair.reused_from;
         st.repair_cost = repair.cost;
         st.repair_least_cost = repair.least_cost;

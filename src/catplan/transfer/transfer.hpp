@@ -154,6 +154,8 @@ struct StepTransfer {
     /// For a repair found on a focus of the target state (focus.hpp), how many of its parts the
     /// focus kept; 0 when found on the whole state or when no step was needed.
     std::size_t repair_focus = 0;
+    /// For a repair found from the generated action's own sides (Repair::from_action).
+    bool repair_from_action = false;
     /// For a repair whose focus had the shape of an earlier one's (repair_memo.hpp): that
     /// earlier source step (0-based), whose plan, renamed, this one is.
     std::optional<std::size_t> repair_reused_from;
