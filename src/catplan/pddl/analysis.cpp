@@ -4,6 +4,8 @@
 #include "catplan/base/union_find.hpp"
 
 #include <algorithm>
+#include <array>
+#include <charconv>
 #include <deque>
 #include <fmt/format.h>
 #include <map>
@@ -527,18 +529,31 @@ std::vector<Invariant> find_invariants(const Domain& domain) {
 }
 
 bool holds_in(const Invariant& invariant, const std::vector<Atom>& facts) {
-    std::map<std::vector<std::string>, const Atom*> seen;
+    // Each counted fact under its key, the names of the arguments the invariant keeps fixed, each
+    // after its length: sorted, the facts of one key are neighbours, and all must be one fact. A
+    // key of short names needs no memory of its own.
+    std::vector<std::pair<std::string, const Atom*>> keyed;
     for (const auto& f : facts) {
         const InvariantPart* p = invariant.find(f.predicate);
         if (p == nullptr) {
             continue;
         }
-        std::vector<std::string> key;
+        std::string key;
         for (std::size_t i : p->order) {
-            key.push_back(f.args[i].name);
+            const std::string& name = f.args[i].name;
+            std::array<char, 24> digits{};
+            auto end = std::to_chars(digits.data(), digits.data() + digits.size(), name.size()).ptr;
+            key.append(digits.data(), end);
+            key += ':';
+            key += name;
         }
-        auto [it, fresh] = seen.emplace(key, &f);
-        if (!fresh && !same_atom(*it->second, f)) {
+        keyed.emplace_back(std::move(key), &f);
+    }
+    std::sort(keyed.begin(), keyed.end(),
+              [](const auto& a, const auto& b) { return a.first < b.first; });
+    for (std::size_t k = 1; k < keyed.size(); ++k) {
+        if (keyed[k].first == keyed[k - 1].first &&
+            !same_atom(*keyed[k].second, *keyed[k - 1].second)) {
             return false;
         }
     }
