@@ -22,6 +22,10 @@ std::string type_of_term(const Scope& s, const Term& t) {
         }
         return "";
     }
+    if (s.objects != nullptr) {
+        const TypedName* o = s.objects->find(t.name);
+        return o == nullptr ? "" : o->type;
+    }
     for (const auto& c : s.domain.constants) {
         if (c.name == t.name) {
             return c.type;

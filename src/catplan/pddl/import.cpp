@@ -13,6 +13,7 @@
 #include <memory>
 #include <set>
 #include <unordered_map>
+#include <unordered_set>
 
 namespace catplan::pddl {
 
@@ -399,12 +400,12 @@ std::shared_ptr<ACSet> make_state(const Import& im, const std::vector<TypedName>
 std::vector<TypedName> mentioned(const Domain& d, const Problem& p,
                                  const std::vector<Atom>& atoms) {
     std::vector<TypedName> out;
+    ObjectIndex objects(d, p);
+    std::unordered_set<std::string_view> known; // views of the atoms' names
     for (const auto& a : atoms) {
         for (const auto& t : a.args) {
-            bool known = std::any_of(out.begin(), out.end(),
-                                     [&](const TypedName& o) { return o.name == t.name; });
-            if (!known) {
-                out.push_back(*find_object(d, p, t.name));
+            if (known.insert(t.name).second) {
+                out.push_back(*objects.find(t.name));
             }
         }
     }

@@ -226,7 +226,8 @@ struct StepProblem {
 
 /// What is wrong with a step whatever the state: an unknown action (then nothing else), a wrong
 /// number of arguments (then nothing else), each unknown object and each argument of a wrong type.
-std::vector<StepProblem> static_problems(const Domain& d, const Problem& p, const IpcStep& s) {
+std::vector<StepProblem> static_problems(const Domain& d, const ObjectIndex& objects,
+                                         const IpcStep& s) {
     auto at = [&](SourceRange r) { return r.valid() ? r : s.range; };
     const Action* a = d.find_action(s.action);
     if (a == nullptr) {
@@ -244,7 +245,7 @@ std::vector<StepProblem> static_problems(const Domain& d, const Problem& p, cons
     std::vector<StepProblem> out;
     for (std::size_t i = 0; i < s.args.size(); ++i) {
         SourceRange arg = at(i < s.arg_ranges.size() ? s.arg_ranges[i] : SourceRange{});
-        const TypedName* o = find_object(d, p, s.args[i]);
+        const TypedName* o = objects.find(s.args[i]);
         if (o == nullptr) {
             out.push_back({arg, fmt::format("unknown object '{}'", s.args[i])});
         } else if (!d.is_subtype(o->type, a->params[i].type)) {
@@ -359,13 +360,14 @@ IpcValidation replay_ipc_plan(const Domain& d, const Problem& p, const IpcPlan& 
     IpcValidation v;
     v.cost.unit = unit_cost(d, p);
     Facts facts(p);
+    ObjectIndex objects(d, p);
     for (std::size_t i = 0; i < plan.size() && !v.failed_step; ++i) {
         const IpcStep& s = plan[i];
         auto fail_step = [&](const std::string& why) {
             v.failed_step = i;
             v.reason = fmt::format("step {} {}: {}", i + 1, s.to_string(), why);
         };
-        if (auto problems = static_problems(d, p, s); !problems.empty()) {
+        if (auto problems = static_problems(d, objects, s); !problems.empty()) {
             fail_step(problems[0].message);
             break;
         }
@@ -442,8 +444,9 @@ std::optional<IpcPlan> parse_ipc_plan(std::uint32_t file, const SourceManager& s
 bool check_ipc_plan(const Import& import, const IpcPlan& plan, DiagnosticSink& sink) {
     CATPLAN_ASSERT(import.pddl_problem.has_value(), "a plan is checked against a problem");
     bool ok = true;
+    ObjectIndex objects(import.pddl_domain, *import.pddl_problem);
     for (const auto& step : plan) {
-        for (auto& problem : static_problems(import.pddl_domain, *import.pddl_problem, step)) {
+        for (auto& problem : static_problems(import.pddl_domain, objects, step)) {
             sink.error(problem.at, std::move(problem.message));
             ok = false;
         }

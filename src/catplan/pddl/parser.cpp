@@ -466,7 +466,8 @@ std::optional<Problem> parse_problem(std::uint32_t file, const Domain& domain,
     Problem pr;
     pr.name = *name;
     pr.range = top->items[1].range;
-    Scope scope{domain, nullptr, &pr};
+    ObjectIndex objects(domain, pr);
+    Scope scope{domain, nullptr, &pr, &objects};
     FormulaReader fr(p, scope);
     for (std::size_t i = 2; i < top->items.size(); ++i) {
         if (!read_problem_section(p, fr, domain, top->items[i], pr)) {
@@ -479,18 +480,23 @@ std::optional<Problem> parse_problem(std::uint32_t file, const Domain& domain,
     return pr;
 }
 
-const TypedName* find_object(const Domain& d, const Problem& p, std::string_view name) {
-    for (const auto& c : d.constants) {
-        if (c.name == name) {
-            return &c;
+const TypedName* ObjectIndex::find(std::string_view name) const {
+    if (d_->constants.data() != constants_ || p_->objects.data() != objects_ ||
+        d_->constants.size() != num_constants_ || p_->objects.size() != num_objects_) {
+        // The names are views into the lists: a list that moved or grew is indexed again.
+        index_.clear();
+        for (const auto* list : {&d_->constants, &p_->objects}) {
+            for (const auto& o : *list) {
+                index_.emplace(o.name, &o); // the first of a name stays
+            }
         }
+        constants_ = d_->constants.data();
+        objects_ = p_->objects.data();
+        num_constants_ = d_->constants.size();
+        num_objects_ = p_->objects.size();
     }
-    for (const auto& o : p.objects) {
-        if (o.name == name) {
-            return &o;
-        }
-    }
-    return nullptr;
+    auto it = index_.find(name);
+    return it == index_.end() ? nullptr : it->second;
 }
 
 } // namespace catplan::pddl

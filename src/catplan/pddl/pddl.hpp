@@ -32,6 +32,8 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <string_view>
+#include <unordered_map>
 #include <vector>
 
 namespace catplan::pddl {
@@ -172,7 +174,25 @@ std::optional<Domain> parse_domain(std::uint32_t file, const SourceManager& sour
 std::optional<Problem> parse_problem(std::uint32_t file, const Domain& domain,
                                      const SourceManager& sources, DiagnosticSink& sink);
 
-/// The type of a constant of the domain or an object of the problem, or nullptr.
-const TypedName* find_object(const Domain& d, const Problem& p, std::string_view name);
+/// The constants of a domain and the objects of a problem by name, in a hash table: a problem's
+/// atoms and a plan's steps look up thousands of names among hundreds of objects. It follows the
+/// domain and the problem as they grow (the table is made again when a list has grown or moved).
+class ObjectIndex {
+public:
+    ObjectIndex(const Domain& d, const Problem& p) : d_(&d), p_(&p) {}
+
+    /// The first constant of the domain with this name, else the first object of the problem, or
+    /// nullptr.
+    const TypedName* find(std::string_view name) const;
+
+private:
+    const Domain* d_;
+    const Problem* p_;
+    mutable std::unordered_map<std::string_view, const TypedName*> index_;
+    // The lists the table was made from, and their lengths then.
+    mutable const TypedName* constants_ = nullptr;
+    mutable const TypedName* objects_ = nullptr;
+    mutable std::size_t num_constants_ = 0, num_objects_ = 0;
+};
 
 } // namespace catplan::pddl

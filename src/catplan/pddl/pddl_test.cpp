@@ -132,6 +132,55 @@ TEST(PddlAnalysis, BlocksworldsInvariantLeavesOneRulePerAction) {
     EXPECT_EQ(g->import->find_action("move")->variants.size(), 2u);
 }
 
+TEST(PddlAnalysis, AnInvariantHoldsWhereEachInstanceHasAtMostOneFact) {
+    auto l = load("blocksworld-domain.pddl", "blocksworld-p01.pddl");
+    ASSERT_TRUE(l->domain) << l->errors();
+    auto invariants = find_invariants(*l->domain);
+    auto it = std::find_if(invariants.begin(), invariants.end(), [](const Invariant& inv) {
+        return inv.to_string() == "at most one of (clear ?1), (holding ?1), (on * ?1)";
+    });
+    ASSERT_NE(it, invariants.end());
+    auto atom = [](std::string predicate, std::vector<std::string> args) {
+        Atom a;
+        a.predicate = std::move(predicate);
+        for (auto& name : args) {
+            a.args.push_back({std::move(name), false, {}});
+        }
+        return a;
+    };
+    // b is clear and holds nothing; the same fact twice is one fact.
+    EXPECT_TRUE(holds_in(*it, {atom("clear", {"b"}), atom("on", {"a", "c"}), atom("clear", {"b"}),
+                               atom("on", {"c", "ab"})}));
+    // Two facts of one instance: b is clear and a is on it.
+    EXPECT_FALSE(
+        holds_in(*it, {atom("clear", {"b"}), atom("on", {"c", "d"}), atom("on", {"a", "b"})}));
+    // An instance is its argument: a and ab are two.
+    EXPECT_TRUE(holds_in(*it, {atom("clear", {"ab"}), atom("holding", {"a"})}));
+    EXPECT_FALSE(holds_in(*it, {atom("clear", {"a"}), atom("holding", {"a"})}));
+}
+
+TEST(PddlParse, AnObjectIndexFindsConstantsFirstAndFollowsAGrowingProblem) {
+    auto l = load("blocksworld-domain.pddl", "blocksworld-p01.pddl");
+    ASSERT_TRUE(l->problem) << l->errors();
+    Domain d = *l->domain;
+    Problem p = *l->problem;
+    ObjectIndex objects(d, p);
+    ASSERT_FALSE(p.objects.empty());
+    const std::string first = p.objects.front().name;
+    ASSERT_NE(objects.find(first), nullptr);
+    EXPECT_EQ(objects.find(first)->name, first);
+    EXPECT_EQ(objects.find("no-such-object"), nullptr);
+    // Objects added (the list moves) are found; a constant of a name comes before an object.
+    for (int i = 0; i < 100; ++i) {
+        p.objects.push_back({"extra" + std::to_string(i), "object", {}});
+    }
+    ASSERT_NE(objects.find("extra99"), nullptr);
+    EXPECT_EQ(objects.find("extra99")->type, "object");
+    d.constants.push_back({first, "table", {}});
+    ASSERT_NE(objects.find(first), nullptr);
+    EXPECT_EQ(objects.find(first)->type, "table");
+}
+
 TEST(PddlSemantics, AddingATrueFactKeepsOneFact) {
     auto l = load("dup-domain.pddl", "dup-p01.pddl");
     ASSERT_TRUE(l->import) << l->errors();

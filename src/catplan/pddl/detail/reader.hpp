@@ -92,6 +92,7 @@ struct Scope {
     const Domain& domain;
     const std::vector<TypedName>* params = nullptr;
     const Problem* problem = nullptr;
+    const ObjectIndex* objects = nullptr; ///< the domain's constants and the problem's objects
 };
 
 class FormulaReader {
