@@ -134,6 +134,12 @@ public:
                   const CreatedName& name, const plan::Step* source = nullptr,
                   const GeneratedStep* generated = nullptr);
 
+    /// Whether a repair of a step of this source action would search its generated action's
+    /// sides (GeneratedStep): not where repairs sum costs, and once per action.
+    bool searches_generated(const std::string& source_action) const {
+        return !by_cost_ && !generated_searched_.contains(source_action);
+    }
+
     /// Hands back a state the caller is done with (the y a repair's reached state replaced), whose
     /// memory the next replay reuses.
     void recycle(NamedState&& old);

@@ -395,9 +395,10 @@ private:
             check_->before(m, *x_, matches[0], *y_);
         }
         // Where nothing corresponds, the generated action bound as the source step binds it
-        // (read before the source step changes X): a repair may start from its sides.
+        // (read before the source step changes X), where a repair would start from its sides.
         std::optional<GeneratedStep> generated;
-        if (matches.empty() && a.target != nullptr) {
+        if (matches.empty() && a.target != nullptr &&
+            repairer().searches_generated(plan_.steps[i].action)) {
             generated.emplace();
             generated->rule = a.target;
             generated->bindings = carried_bindings(a, m, *x_, *y_, renaming_);
@@ -453,13 +454,9 @@ private:
     // A repair: the target's own actions from Y_{i-1} to a state that holds Δ_F(X_i).
     bool repaired_step(std::size_t i, const Correspondence* c, StepTransfer& st,
                        const GeneratedStep* generated) {
-        const auto& own = *options_.target_actions;
         ACSet subgoal = migrate::migrate(f_, x_->state());
         rename_parts(subgoal, renaming_);
-        if (!repairer_) {
-            repairer_.emplace(own.domain, options_.repair, options_.target_values);
-        }
-        auto repair = repairer_->repair(
+        auto repair = repairer().repair(
             *y_, subgoal, i, [&](NamedState& z, ObId ob) { return created_name(z, ob, i); },
             &plan_.steps[i], generated);
         if (!repair.found) {
@@ -497,6 +494,15 @@ private:
     // not comparable with the source's).
     bool comparing() const {
         return check_ && (options_.follow_source || out_.verdict.divergences.empty());
+    }
+
+    // The repairer of this transfer, made at the first repair.
+    Repairer& repairer() {
+        if (!repairer_) {
+            const auto& own = *options_.target_actions;
+            repairer_.emplace(own.domain, options_.repair, options_.target_values);
+        }
+        return *repairer_;
     }
 
     // Y_i := Δ_F(X_i), named as Y_0 was.
