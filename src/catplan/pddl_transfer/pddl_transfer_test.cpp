@@ -292,6 +292,15 @@ TEST(PddlTransfer, RepairsTakeNoStepWithoutACostWhereTheTargetsValuesAreKnown) {
     ASSERT_TRUE(c.validation.has_value());
     EXPECT_TRUE(c.validation->valid) << c.validation->reason;
 
+    // Repairs that count steps, and search the drive's own sides first, still take no shuttle.
+    auto o = transfer_options(*s, plan);
+    o.repair.least_cost = false;
+    auto by_steps = transfer::transfer_plan(*s->map, *s->source->problem, source_plan(*s, plan), o);
+    ASSERT_TRUE(by_steps.verdict.valid()) << by_steps.verdict.reason();
+    EXPECT_EQ(
+        actions_of(check(*s, plan, by_steps)),
+        (std::vector<std::string>{"depart", "arrive", "depart", "arrive", "depart", "arrive"}));
+
     // Repairs that read no costs take the shuttle, which the target problem cannot price.
     s->target_values.reset();
     auto [t2, c2] = run(*s, plan);
