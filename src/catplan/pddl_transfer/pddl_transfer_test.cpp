@@ -107,13 +107,11 @@ TEST(PddlTransfer, AnActionsFirstRepairIsSearchedOnItsMigratedActionsOwnSides) {
     auto [t, c] = run(*s, l.plan(*s, "blocks/p01-3.plan"));
     ASSERT_TRUE(t.verdict.valid()) << t.verdict.reason();
     ASSERT_EQ(t.steps.size(), 3U);
-    std::vector<std::string> first;
     for (const auto& st : t.steps) {
         EXPECT_TRUE(st.repair_from_action);
         EXPECT_EQ(st.repair_focus, 0U);
         EXPECT_FALSE(st.repair_reused_from.has_value());
         EXPECT_GE(st.repair_stats.expanded, 1U);
-        first.push_back(st.target_steps.at(0).action);
     }
     EXPECT_EQ(actions_of(c), (std::vector<std::string>{"unstack", "put-down", "unstack", "stack",
                                                        "pick-up", "stack"}));
