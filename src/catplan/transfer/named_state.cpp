@@ -81,10 +81,10 @@ void NamedState::add(ObId ob, Part p) {
     if (n.empty()) {
         return;
     }
-    auto [it, fresh] = index_[ob.index()].emplace(n, p);
-    if (!fresh && it->second != p) {
-        ambiguous_[ob.index()] += it->second != kNoPart;
-        it->second = kNoPart;
+    auto [e, fresh] = index_[ob.index()].emplace(n, p);
+    if (!fresh && *e != p) {
+        ambiguous_[ob.index()] += *e != kNoPart;
+        *e = kNoPart;
     }
 }
 
@@ -92,9 +92,9 @@ void NamedState::add(ObId ob, Part p) {
 void NamedState::remove(ObId ob, Part p) {
     std::string_view n = x_.part_name(ob, p);
     auto& idx = index_[ob.index()];
-    auto it = idx.find(n);
-    if (it != idx.end() && it->second == p) {
-        idx.erase(it);
+    const Part* e = idx.find(n);
+    if (e != nullptr && *e == p) {
+        idx.erase(n);
         freed(ob, n);
     }
 }
@@ -107,8 +107,8 @@ void NamedState::moved(ObId ob, Part p, Part survivors) {
     if (n.empty()) {
         return;
     }
-    auto [it, fresh] = index_[ob.index()].emplace(n, p);
-    Part& e = it->second;
+    auto [entry, fresh] = index_[ob.index()].emplace(n, p);
+    Part& e = *entry;
     if (fresh || e == p) {
         return;
     }

@@ -11,12 +11,12 @@
 #include "catplan/hom/morphism.hpp"
 #include "catplan/plan/domain.hpp"
 #include "catplan/rewrite/rule.hpp"
+#include "catplan/transfer/name_index.hpp"
 
 #include <functional>
 #include <map>
 #include <string>
 #include <string_view>
-#include <unordered_map>
 #include <vector>
 
 namespace catplan::transfer {
@@ -32,14 +32,14 @@ public:
 
     /// The only part of ob with this name, or kNoPart (none, or several).
     Part find(ObId ob, std::string_view name) const {
-        auto it = index_[ob.index()].find(name);
-        return it == index_[ob.index()].end() ? kNoPart : it->second;
+        const Part* p = index_[ob.index()].find(name);
+        return p == nullptr ? kNoPart : *p;
     }
 
     /// Whether several parts of ob have this name.
     bool ambiguous(ObId ob, std::string_view name) const {
-        auto it = index_[ob.index()].find(name);
-        return it != index_[ob.index()].end() && it->second == kNoPart;
+        const Part* p = index_[ob.index()].find(name);
+        return p != nullptr && *p == kNoPart;
     }
 
     /// Whether any name has been shared by two parts of ob (it then stays taken and ambiguous).
@@ -57,11 +57,9 @@ public:
     std::string fresh_name(ObId ob, const std::string& base);
 
 private:
-    // Keys are views of part names, which are interned for the life of the process; a name
-    // that several parts share maps to kNoPart.
-    using Index = std::unordered_map<std::string_view, Part>;
-
-    bool taken(ObId ob, std::string_view name) const { return index_[ob.index()].count(name) > 0; }
+    bool taken(ObId ob, std::string_view name) const {
+        return index_[ob.index()].find(name) != nullptr;
+    }
 
     void add(ObId ob, Part p);
     void remove(ObId ob, Part p);
@@ -73,7 +71,7 @@ private:
 
     acset::ACSet x_;
     /// Per object: name -> the part that has it (kNoPart when several do).
-    std::vector<Index> index_;
+    std::vector<NameIndex> index_;
     std::vector<std::size_t> ambiguous_; ///< per object, the names that became ambiguous
     /// Per object: for each base fresh_name had to suffix, the smallest suffix that may be free.
     std::vector<std::map<std::string, std::uint64_t, std::less<>>> suffix_hints_;
