@@ -138,36 +138,42 @@ Result<Focus> Focus::of(const NamedState& y, const ACSet& subgoal, Scan scan) {
 // Every part of the subgoal that homs point into has a namesake in Y.
 std::optional<std::string> Focus::match_names(const NamedState& y) {
     const auto& s = y_->schema();
-    namesake_.resize(s.num_obs());
-    goal_part_.resize(s.num_obs());
-    seeded_.resize(s.num_obs());
+    std::size_t y_parts = 0, goal_parts = 0;
+    for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
+        y_parts += y_->num_parts(ObId(o));
+        goal_parts += goal_->num_parts(ObId(o));
+    }
+    seeded_.reserve(s.num_obs(), y_parts);
+    goal_part_.reserve(s.num_obs(), y_parts);
+    namesake_.reserve(s.num_obs(), goal_parts);
     for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
         ObId ob(o);
-        seeded_[o].assign(y_->num_parts(ob), 0);
-        if (!pointed(s, ob)) {
+        seeded_.append(y_->num_parts(ob), 0);
+        bool is_pointed = pointed(s, ob);
+        goal_part_.append(is_pointed ? y_->num_parts(ob) : 0, kNoPart);
+        namesake_.append(is_pointed ? goal_->num_parts(ob) : 0, kNoPart);
+        if (!is_pointed) {
             continue;
         }
-        goal_part_[o].assign(y_->num_parts(ob), kNoPart);
+        auto namesake = namesake_[o];
+        auto goal_part = goal_part_[o];
         if (names_in_order(y, *goal_, ob)) {
-            namesake_[o].resize(goal_->num_parts(ob));
-            std::iota(namesake_[o].begin(), namesake_[o].end(), Part{0});
-            for (Part p = 0; p < goal_->num_parts(ob); ++p) {
-                goal_part_[o][p] = p;
-            }
+            std::iota(namesake.begin(), namesake.end(), Part{0});
+            std::iota(goal_part.begin(), goal_part.begin() + namesake.size(), Part{0});
             continue;
         }
-        for (Part p = 0; p < goal_->num_parts(ob); ++p) {
+        for (Part p = 0; p < namesake.size(); ++p) {
             std::string_view name = goal_->part_name(ob, p);
             Part q = name.empty() ? kNoPart : y.find(ob, name);
             if (q == kNoPart) {
                 return fmt::format("the subgoal's {} {} has no namesake in the target state",
                                    s.ob(ob).name, goal_->part_label(ob, p));
             }
-            if (goal_part_[o][q] != kNoPart) {
+            if (goal_part[q] != kNoPart) {
                 return fmt::format("two parts of the subgoal are named {}", name);
             }
-            namesake_[o].push_back(q);
-            goal_part_[o][q] = p;
+            namesake[p] = q;
+            goal_part[q] = p;
         }
     }
     return std::nullopt;
@@ -186,7 +192,7 @@ struct Focus::Columns {
     struct Hom {
         HomId f;
         std::span<const Part> goal, y;
-        const std::vector<Part>* namesake; // of the hom's codomain
+        std::span<const Part> namesake; // of the hom's codomain
     };
 
     struct Attr {
@@ -196,11 +202,13 @@ struct Focus::Columns {
     std::vector<Hom> homs;
     std::vector<Attr> attrs;
 
-    Columns(const ACSet& goal, const ACSet& y, ObId ob,
-            const std::vector<std::vector<Part>>& namesake) {
+    // Reads ob's columns, in place of the last object's (the vectors keep their room).
+    void read(const ACSet& goal, const ACSet& y, ObId ob, const Rows<Part>& namesake) {
         const auto& s = y.schema();
+        homs.clear();
+        attrs.clear();
         for (HomId f : s.homs_from(ob)) {
-            homs.push_back({f, goal.column(f), y.column(f), &namesake[s.hom(f).codom.index()]});
+            homs.push_back({f, goal.column(f), y.column(f), namesake[s.hom(f).codom.index()]});
         }
         for (AttrId a : s.attrs_from(ob)) {
             attrs.push_back({goal.column(a), y.column(a)});
@@ -212,7 +220,7 @@ struct Focus::Columns {
     bool same(Part p, Part q) const {
         for (const auto& h : homs) {
             Part t = h.goal[p];
-            if (t != kNoPart && (*h.namesake)[t] != h.y[q]) {
+            if (t != kNoPart && h.namesake[t] != h.y[q]) {
                 return false;
             }
         }
@@ -229,12 +237,13 @@ struct Focus::Columns {
 // homs point to from them), and the arguments of the subgoal's facts that Y lacks.
 void Focus::find_seeds() {
     const auto& s = y_->schema();
+    Columns cols;
     for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
         ObId ob(o);
         if (goal_->num_parts(ob) == 0) {
             continue;
         }
-        Columns cols(*goal_, *y_, ob, namesake_);
+        cols.read(*goal_, *y_, ob, namesake_);
         bool is_pointed = pointed(s, ob);
         // A step appends what it creates, so a part Y lacks is most often among the subgoal's
         // last: a scan for the first difference reads the parts from the end.
@@ -263,7 +272,7 @@ void Focus::find_seeds() {
             for (const auto& h : cols.homs) {
                 Part t = h.goal[p];
                 if (t != kNoPart) {
-                    seed(s.hom(h.f).codom, (*h.namesake)[t]);
+                    seed(s.hom(h.f).codom, h.namesake[t]);
                 }
             }
             if (scan_ == Scan::FirstDifference) {
@@ -281,7 +290,7 @@ Part Focus::fact_in_y(ObId ob, const Columns& cols, Part p) const {
         if (t == kNoPart) {
             continue;
         }
-        for (Part q : y_->incident(h.f, (*h.namesake)[t])) {
+        for (Part q : y_->incident(h.f, h.namesake[t])) {
             if (cols.same(p, q)) {
                 return q;
             }

@@ -24,6 +24,7 @@
 
 #include <cstddef>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -83,15 +84,41 @@ private:
     void close(std::vector<std::vector<char>>& keep) const;
     FocusedProblem make_problem(std::vector<std::vector<char>> keep) const;
 
+    /// One row of T per object, the rows in one array (a focus is made at every repaired step:
+    /// one allocation, not one per object). Filled object by object with append().
+    template <class T>
+    struct Rows {
+        std::vector<T> cells;
+        std::vector<std::size_t> start{0}; // row o is cells[start[o], start[o + 1])
+
+        void reserve(std::size_t rows, std::size_t n) {
+            start.reserve(rows + 1);
+            cells.reserve(n);
+        }
+
+        void append(std::size_t n, T value) {
+            cells.resize(cells.size() + n, value);
+            start.push_back(cells.size());
+        }
+
+        std::span<T> operator[](std::size_t o) {
+            return {cells.data() + start[o], start[o + 1] - start[o]};
+        }
+
+        std::span<const T> operator[](std::size_t o) const {
+            return {cells.data() + start[o], start[o + 1] - start[o]};
+        }
+    };
+
     const acset::ACSet* y_;
     const acset::ACSet* goal_;
     /// Per object that homs point into, per part of the subgoal: its namesake in Y.
-    std::vector<std::vector<Part>> namesake_;
+    Rows<Part> namesake_;
     /// Per object that homs point into, per part of Y: the subgoal part it is the namesake of.
-    std::vector<std::vector<Part>> goal_part_;
+    Rows<Part> goal_part_;
     std::vector<std::pair<ObId, Part>> seeds_; // parts of Y
     /// Per object, per part of Y: seeded (pointed objects), or found by a fact of the subgoal.
-    std::vector<std::vector<char>> seeded_;
+    Rows<char> seeded_;
     bool shared_fact_ = false;
     bool lacks_fact_ = false; ///< a fact of the subgoal that y lacks
     Scan scan_ = Scan::Whole;
