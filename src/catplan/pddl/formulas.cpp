@@ -43,8 +43,8 @@ std::string type_of_term(const Scope& s, const Term& t) {
 
 /// What catplan does not support of PDDL's formulas and effects, by head: the requirement or
 /// feature it belongs to.
-const std::unordered_map<std::string, std::string>& unsupported_heads() {
-    static const std::unordered_map<std::string, std::string> heads = {
+const std::unordered_map<std::string_view, std::string_view>& unsupported_heads() {
+    static const std::unordered_map<std::string_view, std::string_view> heads = {
         {"or", "disjunctive formulas, :disjunctive-preconditions"},
         {"imply", "disjunctive formulas, :disjunctive-preconditions"},
         {"exists", "quantified formulas, :existential-preconditions"},
@@ -68,7 +68,7 @@ const std::unordered_map<std::string, std::string>& unsupported_heads() {
 } // namespace
 
 bool FormulaReader::unsupported_construct(const SExpr& e) {
-    auto it = unsupported_heads().find(std::string(e.head()));
+    auto it = unsupported_heads().find(e.head());
     if (it == unsupported_heads().end()) {
         return false;
     }
@@ -86,7 +86,7 @@ std::optional<Atom> FormulaReader::with_terms(const SExpr& e) {
         auto t = term(e.items[i]);
         ok = ok && t.has_value();
         if (t) {
-            a.args.push_back(*t);
+            a.args.push_back(std::move(*t));
         }
     }
     return ok ? std::optional(std::move(a)) : std::nullopt;
@@ -129,7 +129,7 @@ std::optional<Atom> FormulaReader::atom(const SExpr& e, bool allow_equality) {
         p_.error(e.items[0].range, fmt::format("unknown predicate '{}'", a.predicate));
         return std::nullopt;
     }
-    return typed_args(a, pred->params, "predicate") ? std::optional(a) : std::nullopt;
+    return typed_args(a, pred->params, "predicate") ? std::optional(std::move(a)) : std::nullopt;
 }
 
 bool FormulaReader::typed_args(const Atom& a, const std::vector<TypedName>& params,
