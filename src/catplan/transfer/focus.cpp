@@ -159,7 +159,7 @@ std::optional<std::string> Focus::match_names(const NamedState& y) {
         auto goal_part = goal_part_[o];
         if (names_in_order(y, *goal_, ob)) {
             std::iota(namesake.begin(), namesake.end(), Part{0});
-            std::iota(goal_part.begin(), goal_part.begin() + namesake.size(), Part{0});
+            std::iota(goal_part.begin(), goal_part.begin() + std::ssize(namesake), Part{0});
             continue;
         }
         for (Part p = 0; p < namesake.size(); ++p) {
