@@ -299,6 +299,17 @@ TEST(PddlTransfer, RepairsTakeNoStepWithoutACostWhereTheTargetsValuesAreKnown) {
         actions_of(check(*s, plan, by_steps)),
         (std::vector<std::string>{"depart", "arrive", "depart", "arrive", "depart", "arrive"}));
 
+    // Nor where the sides' search stops at its first state and each drive is searched on a focus.
+    o.repair.generated_max_nodes = 1;
+    auto focused = transfer::transfer_plan(*s->map, *s->source->problem, source_plan(*s, plan), o);
+    ASSERT_TRUE(focused.verdict.valid()) << focused.verdict.reason();
+    for (const auto& st : focused.steps) {
+        EXPECT_FALSE(st.repair_from_action);
+    }
+    EXPECT_EQ(
+        actions_of(check(*s, plan, focused)),
+        (std::vector<std::string>{"depart", "arrive", "depart", "arrive", "depart", "arrive"}));
+
     // Repairs that read no costs take the shuttle, which the target problem cannot price.
     s->target_values.reset();
     auto [t2, c2] = run(*s, plan);

@@ -405,7 +405,7 @@ bool Repairer::focus_repair(const Request& q, const Focus& focus, Repair& out) {
         auto r = search_by_names(p, options);
         add_stats(out.stats, r.stats);
         if (r.status != plan::SearchStatus::Solved ||
-            !binds_initial_parts(*target_, *p->initial, r.plan->steps)) {
+            !binds_initial_parts(*target_, *p->initial, r.plan->steps) || !costed(r.plan->steps)) {
             if (shape && r.status != plan::SearchStatus::TimeLimit &&
                 r.status != plan::SearchStatus::MemoryLimit) {
                 memo_.remember_failure(*shape, q.step);
