@@ -2,6 +2,7 @@
 // morphisms, on small random states with attribute variables and unset cells.
 
 #include "catplan/hom/detail/test_instances.hpp"
+#include "catplan/hom/forced.hpp"
 #include "catplan/hom/hom_search.hpp"
 #include "catplan/hom/isomorphism.hpp"
 #include "catplan/hom/morphism.hpp"
@@ -333,6 +334,64 @@ TEST(HomSearchProperty, InitialAndCandidatesMatchBruteForce) {
         }
         check_against_brute_force(x, y, cand);
     }
+}
+
+// What forced_homomorphism decides is what the search finds: no morphism, or exactly its one.
+// The bindings place most vertices, so that most instances are decided; the dangling-like
+// `accept` and monic choices vary with the seed.
+TEST(HomSearchProperty, ForcedMorphismsAreTheSearchsOnly) {
+    std::size_t none = 0, one = 0;
+    for (std::uint64_t seed = 0; seed < 4 * kSeeds; ++seed) {
+        SCOPED_TRACE(seed);
+        Gen g(5000 + seed);
+        ACSet x = g.state(3, 3, 0, seed % 2 == 0);
+        // Half the time Y contains X (its first parts), and the bindings mostly follow it.
+        bool contains = seed % 2 == 1;
+        ACSet y = contains ? x : g.state(4, 3, 2, seed % 3 == 0);
+        if (contains) {
+            Part v = y.add_part(kV);
+            y.set_subpart(AttrId(0), v, Value::integer(0));
+            for (std::size_t k = g.below(3); k > 0; --k) {
+                Part e = y.add_part(kE);
+                y.set_subpart(kSrc, e, static_cast<Part>(g.below(y.num_parts(kV))));
+                y.set_subpart(kTgt, e, static_cast<Part>(g.below(y.num_parts(kV))));
+                y.set_subpart(AttrId(1), e, Value::integer(static_cast<std::int64_t>(g.below(2))));
+            }
+        }
+        if (x.num_parts(kV) == 0) {
+            continue;
+        }
+        HomSearchOptions opt;
+        opt.monic_all = seed % 4 != 0;
+        for (Part p = 0; p < x.num_parts(kV); ++p) {
+            if (g.chance(0.8)) {
+                Part q =
+                    contains && g.chance(0.8) ? p : static_cast<Part>(g.below(y.num_parts(kV)));
+                opt.bind(kV, p, q);
+            }
+        }
+        if (seed % 5 == 0) {
+            opt.accept = [](ObId ob, Part dom, Part codom) {
+                return (ob.index() + dom + 2 * codom) % 4 != 1;
+            };
+        }
+        Forced f = forced_homomorphism(x, y, opt);
+        if (f.kind == Forced::Kind::Undecided) {
+            continue;
+        }
+        HomSearchResult all = find_homomorphisms(x, y, opt);
+        ASSERT_TRUE(all.error.empty());
+        if (f.kind == Forced::Kind::None) {
+            EXPECT_TRUE(all.morphisms.empty());
+            ++none;
+        } else {
+            ASSERT_EQ(all.morphisms.size(), 1U);
+            EXPECT_EQ(all.morphisms[0], f.morphism);
+            ++one;
+        }
+    }
+    EXPECT_GE(none, kSeeds / 4); // both answers occur often: the comparison is not vacuous
+    EXPECT_GE(one, kSeeds / 4);
 }
 
 TEST(HomSearchProperty, IsoMatchesBruteForce) {

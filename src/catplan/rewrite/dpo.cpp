@@ -2,6 +2,7 @@
 
 #include "catplan/rewrite/dpo.hpp"
 
+#include "catplan/hom/forced.hpp"
 #include "catplan/hom/hom_search.hpp"
 #include "catplan/rewrite/detail/shape.hpp"
 
@@ -338,10 +339,20 @@ std::vector<ACSetMorphism> find_matches(const Rule& rule, const ACSet& x,
     // per-match maps of the full checks).
     bool only_conditions =
         options.monic && rule.semantics == Semantics::DPO && shape.dangling_by_counts;
+    auto valid = [&](const ACSetMorphism& m) {
+        return only_conditions ? !detail::condition_problem(rule, x, m).has_value()
+                               : !detail::validity_problem(shape, x, m).has_value();
+    };
+    // A step's arguments most often bind everything a search would choose (hom/forced.hpp).
+    if (auto forced = hom::forced_homomorphism(rule.L, x, opt);
+        forced.kind != hom::Forced::Kind::Undecided) {
+        if (forced.kind == hom::Forced::Kind::One && valid(forced.morphism)) {
+            matches.push_back(std::move(forced.morphism));
+        }
+        return matches;
+    }
     auto result = hom::for_each_homomorphism(rule.L, x, opt, [&](const ACSetMorphism& m) {
-        bool valid = only_conditions ? !detail::condition_problem(rule, x, m).has_value()
-                                     : !detail::validity_problem(shape, x, m).has_value();
-        if (valid) {
+        if (valid(m)) {
             matches.push_back(m);
         }
         return options.max_results == 0 || matches.size() < options.max_results;
