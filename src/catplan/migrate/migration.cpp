@@ -283,7 +283,7 @@ void general(const Query& q, const ACSet& x, Tuples& tu) {
     std::vector<Part> parts;
     std::vector<Value> vars;
     std::size_t count = 0;
-    auto r = hom::for_each_homomorphism(shape, x, {}, [&](const hom::ACSetMorphism& m) {
+    auto add = [&](const hom::ACSetMorphism& m) {
         for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
             parts.insert(parts.end(), m.components[o].begin(), m.components[o].end());
         }
@@ -292,8 +292,17 @@ void general(const Query& q, const ACSet& x, Tuples& tu) {
         }
         ++count;
         return true;
-    });
-    CATPLAN_ASSERT(r.error.empty(), "a validated query has finitely many assignments");
+    };
+    bool no_vars = true;
+    for (std::uint32_t t = 0; t < s.num_attr_types(); ++t) {
+        no_vars = no_vars && shape.num_vars(AttrTypeId(t)) == 0;
+    }
+    if (shape.total_parts() == 0 && no_vars) {
+        add(hom::identity(shape)); // `@unit`: one assignment, of nothing (no search to set up)
+    } else {
+        auto r = hom::for_each_homomorphism(shape, x, {}, add);
+        CATPLAN_ASSERT(r.error.empty(), "a validated query has finitely many assignments");
+    }
     // Lexicographic order of the variables' images.
     tu.count = count;
     tu.parts = std::move(parts);
