@@ -82,8 +82,11 @@ private:
         }
         if (text_[i_] != '(') {
             while (i_ < text_.size() && !ends_token(start)) {
-                e.atom += ascii_lower(text_[i_]);
                 ++i_;
+            }
+            e.atom.assign(text_.substr(start, i_ - start));
+            for (char& c : e.atom) {
+                c = ascii_lower(c);
             }
             e.range = range(start, i_);
             return e;
@@ -93,6 +96,7 @@ private:
             return std::nullopt;
         }
         e.list = true;
+        e.items.reserve(4); // most lists are an atom (head) and a few items: no regrowth
         ++i_;
         for (;;) {
             skip();

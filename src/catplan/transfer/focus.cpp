@@ -234,52 +234,71 @@ struct Focus::Columns {
 };
 
 // The parts of Y that differ from their namesakes in the subgoal (with the parts the subgoal's
-// homs point to from them), and the arguments of the subgoal's facts that Y lacks.
+// homs point to from them), and the arguments of the subgoal's facts that Y lacks. A scan for the
+// first difference reads the objects of facts first: a step adds and deletes facts far more
+// often than it changes the parts they hold.
 void Focus::find_seeds() {
     const auto& s = y_->schema();
     Columns cols;
-    for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
-        ObId ob(o);
-        if (goal_->num_parts(ob) == 0) {
-            continue;
+    if (scan_ == Scan::Whole) {
+        for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
+            seed_object(ObId(o), cols);
         }
-        cols.read(*goal_, *y_, ob, namesake_);
-        bool is_pointed = pointed(s, ob);
-        // A step appends what it creates, so a part Y lacks is most often among the subgoal's
-        // last: a scan for the first difference reads the parts from the end.
-        bool backwards = scan_ == Scan::FirstDifference;
-        Part n = static_cast<Part>(goal_->num_parts(ob));
-        for (Part k = 0; k < n; ++k) {
-            Part p = backwards ? n - 1 - k : k;
-            bool differs = false;
-            if (is_pointed) {
-                Part q = namesake_[o][p];
-                differs = !cols.same(p, q);
-                if (differs) {
-                    seed(ob, q);
-                }
-            } else {
-                Part q = fact_in_y(ob, cols, p);
-                differs = q == kNoPart;
-                lacks_fact_ = lacks_fact_ || differs;
-                if (!differs && seeded_[o][q]++) {
-                    shared_fact_ = true; // two facts of the subgoal are one fact of Y
-                }
-            }
-            if (!differs) {
-                continue;
-            }
-            for (const auto& h : cols.homs) {
-                Part t = h.goal[p];
-                if (t != kNoPart) {
-                    seed(s.hom(h.f).codom, h.namesake[t]);
-                }
-            }
-            if (scan_ == Scan::FirstDifference) {
+        return;
+    }
+    for (bool facts : {true, false}) {
+        for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
+            if (pointed(s, ObId(o)) != facts && seed_object(ObId(o), cols)) {
                 return;
             }
         }
     }
+}
+
+// Seeds what differs at ob; true when the scan is for the first difference and found one.
+bool Focus::seed_object(ObId ob, Columns& cols) {
+    const auto& s = y_->schema();
+    std::uint32_t o = ob.index();
+    if (goal_->num_parts(ob) == 0) {
+        return false;
+    }
+    cols.read(*goal_, *y_, ob, namesake_);
+    bool is_pointed = pointed(s, ob);
+    // A step appends what it creates, so a part Y lacks is most often among the subgoal's
+    // last: a scan for the first difference reads the parts from the end.
+    bool backwards = scan_ == Scan::FirstDifference;
+    Part n = static_cast<Part>(goal_->num_parts(ob));
+    for (Part k = 0; k < n; ++k) {
+        Part p = backwards ? n - 1 - k : k;
+        bool differs = false;
+        if (is_pointed) {
+            Part q = namesake_[o][p];
+            differs = !cols.same(p, q);
+            if (differs) {
+                seed(ob, q);
+            }
+        } else {
+            Part q = fact_in_y(ob, cols, p);
+            differs = q == kNoPart;
+            lacks_fact_ = lacks_fact_ || differs;
+            if (!differs && seeded_[o][q]++) {
+                shared_fact_ = true; // two facts of the subgoal are one fact of Y
+            }
+        }
+        if (!differs) {
+            continue;
+        }
+        for (const auto& h : cols.homs) {
+            Part t = h.goal[p];
+            if (t != kNoPart) {
+                seed(s.hom(h.f).codom, h.namesake[t]);
+            }
+        }
+        if (scan_ == Scan::FirstDifference) {
+            return true;
+        }
+    }
+    return false;
 }
 
 // A part of Y of ob (nothing points into ob) with the hom values of the subgoal's part p (by

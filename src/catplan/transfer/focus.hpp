@@ -79,6 +79,7 @@ private:
 
     std::optional<std::string> match_names(const NamedState& y);
     void find_seeds();
+    bool seed_object(ObId ob, Columns& cols);
     Part fact_in_y(ObId ob, const Columns& cols, Part p) const;
     void seed(ObId ob, Part q);
     void close(std::vector<std::vector<char>>& keep) const;
