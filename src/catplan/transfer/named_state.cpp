@@ -24,21 +24,18 @@ Result<hom::ACSetMorphism>
 NamedState::apply(const rewrite::Rule& rule, const hom::ACSetMorphism& m,
                   const std::function<std::string(ObId, Part)>& name_of) {
     const auto& s = x_.schema();
-    // The parts to be deleted: the images of the parts the rule deletes.
-    std::vector<std::vector<Part>> deleted(s.num_obs());
-    for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
-        for (Part p : rule.deleted_parts(ObId(o))) {
-            deleted[o].push_back(m.components[o][p]);
-        }
-    }
-    // The parts that survive the deletion keep the ids below survivors[o]; a created part is at or
-    // above it, unless it is a fact merged into one already there (Rule::relations).
+    // The parts to be deleted (the images of the parts the rule deletes), unnamed now. The parts
+    // that survive the deletion keep the ids below survivors[o]; a created part is at or above
+    // it, unless it is a fact merged into one already there (Rule::relations).
+    std::vector<std::pair<ObId, Part>> deleted;
     std::vector<Part> survivors(s.num_obs());
     for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
-        for (Part p : deleted[o]) {
-            remove(ObId(o), p);
+        const auto& parts = rule.deleted_parts(ObId(o));
+        for (Part p : parts) {
+            deleted.emplace_back(ObId(o), m.components[o][p]);
+            remove(ObId(o), m.components[o][p]);
         }
-        survivors[o] = static_cast<Part>(x_.num_parts(ObId(o)) - deleted[o].size());
+        survivors[o] = static_cast<Part>(x_.num_parts(ObId(o)) - parts.size());
     }
     auto r_to_x = rewrite::rewrite_in_place(rule, x_, m);
     if (!r_to_x) {
@@ -47,11 +44,9 @@ NamedState::apply(const rewrite::Rule& rule, const hom::ACSetMorphism& m,
     // Pop-and-swap moved surviving parts into deleted slots below the count of survivors;
     // the created parts come after them (R's order) and are named below. A moved part's
     // entry still holds its old id: point it at the slot it sits in now.
-    for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
-        for (Part p : deleted[o]) {
-            if (p < survivors[o]) {
-                moved(ObId(o), p, survivors[o]);
-            }
+    for (auto [ob, p] : deleted) {
+        if (p < survivors[ob.index()]) {
+            moved(ob, p, survivors[ob.index()]);
         }
     }
     name_created(rule, *r_to_x, survivors, name_of);
@@ -63,9 +58,11 @@ std::string NamedState::fresh_name(ObId ob, const std::string& base) {
         return base;
     }
     auto& hints = suffix_hints_[ob.index()];
-    auto it = hints.find(base);
-    if (it == hints.end()) {
-        it = hints.emplace(base, 2).first;
+    auto it =
+        std::lower_bound(hints.begin(), hints.end(), base,
+                         [](const auto& hint, const std::string& b) { return hint.first < b; });
+    if (it == hints.end() || it->first != base) {
+        it = hints.emplace(it, base, 2);
     }
     for (std::uint64_t k = it->second;; ++k) {
         std::string name = fmt::format("{}{}", base, k);

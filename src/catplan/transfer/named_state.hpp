@@ -14,9 +14,9 @@
 #include "catplan/transfer/name_index.hpp"
 
 #include <functional>
-#include <map>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace catplan::transfer {
@@ -73,8 +73,9 @@ private:
     /// Per object: name -> the part that has it (kNoPart when several do).
     std::vector<NameIndex> index_;
     std::vector<std::size_t> ambiguous_; ///< per object, the names that became ambiguous
-    /// Per object: for each base fresh_name had to suffix, the smallest suffix that may be free.
-    std::vector<std::map<std::string, std::uint64_t, std::less<>>> suffix_hints_;
+    /// Per object: for each base fresh_name had to suffix, the smallest suffix that may be free,
+    /// sorted by base (a flat array: a repair copies the state at every repaired step).
+    std::vector<std::vector<std::pair<std::string, std::uint64_t>>> suffix_hints_;
 };
 
 /// The match of a step in x: its arguments bound to the parts of those names (through the index),
