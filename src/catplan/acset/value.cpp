@@ -22,27 +22,6 @@ schema::ValueKind Value::kind() const {
     }
 }
 
-bool operator==(const Value& a, const Value& b) {
-    if (a.tag_ != b.tag_) {
-        return false;
-    }
-    switch (a.tag_) {
-    case Value::Tag::Unset:
-        return true;
-    case Value::Tag::Var:
-        return a.u_.var == b.u_.var;
-    case Value::Tag::Bool:
-        return a.u_.b == b.u_.b;
-    case Value::Tag::Int:
-        return a.u_.i == b.u_.i;
-    case Value::Tag::Float:
-        return a.u_.f == b.u_.f;
-    case Value::Tag::String:
-        return a.u_.s == b.u_.s;
-    }
-    return false;
-}
-
 std::uint64_t Value::hash() const {
     std::uint64_t payload = 0;
     switch (tag_) {

@@ -96,8 +96,29 @@ public:
     /// The kind of a concrete value (Unknown for a variable or unset).
     schema::ValueKind kind() const;
 
-    /// Exact equality: same tag and payload (Float compared bitwise-equal as ==).
-    friend bool operator==(const Value& a, const Value& b);
+    /// Exact equality: same tag and payload (Float compared bitwise-equal as ==). Inline: the
+    /// hom search and the comparisons by names compare attribute cells in their inner loops.
+    friend bool operator==(const Value& a, const Value& b) {
+        if (a.tag_ != b.tag_) {
+            return false;
+        }
+        switch (a.tag_) {
+        case Tag::Unset:
+            return true;
+        case Tag::Var:
+            return a.u_.var == b.u_.var;
+        case Tag::Bool:
+            return a.u_.b == b.u_.b;
+        case Tag::Int:
+            return a.u_.i == b.u_.i;
+        case Tag::Float:
+            return a.u_.f == b.u_.f;
+        case Tag::String:
+            return a.u_.s == b.u_.s;
+        }
+        return false;
+    }
+
     /// A hash consistent with ==.
     std::uint64_t hash() const;
 
