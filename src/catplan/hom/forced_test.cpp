@@ -58,6 +58,21 @@ TEST(ForcedHomomorphism, LeavesWhatItDoesNotReadToTheSearch) {
     EXPECT_EQ(forced_homomorphism(loop, y, none_bound).kind, Forced::Kind::None);
 }
 
+// The bound edge's target is unset in Y, set in X: no morphism, decided when the edge is placed
+// (agrees() reads every hom of a part before the part is placed, so propagation never follows
+// an unset value of Y).
+TEST(ForcedHomomorphism, FindsNoneWhereYLeavesAHomUnsetThatXSets) {
+    ACSet x = make_graph(2, {{0, 1}});
+    ACSet y = make_graph(2, {{0, 1}});
+    y.set_subpart(kTgt, 0, kNoPart);
+    HomSearchOptions opt;
+    opt.monic_all = true;
+    opt.bind(kE, 0, 0);
+    opt.accept = [&](ObId ob, Part, Part codom) { return codom < y.num_parts(ob); };
+    EXPECT_EQ(forced_homomorphism(x, y, opt).kind, Forced::Kind::None);
+    EXPECT_TRUE(find_homomorphisms(x, y, opt).morphisms.empty());
+}
+
 // A part of an object without homs (a fact of no arguments) goes to the only part of Y left for
 // it; with two left, the search decides.
 TEST(ForcedHomomorphism, PlacesAPartWithoutHomsWhereOnlyOnePartIsLeft) {
