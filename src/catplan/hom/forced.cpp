@@ -1,5 +1,8 @@
 #include "catplan/hom/forced.hpp"
 
+#include "catplan/base/assert.hpp"
+#include "catplan/hom/detail/search_engine.hpp"
+
 #include <algorithm>
 #include <array>
 #include <optional>
@@ -232,6 +235,7 @@ Forced Propagation::run() {
 } // namespace
 
 Forced forced_homomorphism(const ACSet& x, const ACSet& y, const HomSearchOptions& options) {
+    CATPLAN_ASSERT(detail::searchable(x, y), "hom search between states on different schemas");
     return Propagation(x, y, options).run();
 }
 

@@ -89,5 +89,15 @@ TEST(ForcedHomomorphism, PlacesAPartWithoutHomsWhereOnlyOnePartIsLeft) {
     EXPECT_EQ(forced_homomorphism(x, y, any).kind, Forced::Kind::Undecided);
 }
 
+// States on schemas of different shapes are a misuse, asserted as the search asserts it.
+TEST(ForcedHomomorphism, AssertsThatBothStatesShareASchema) {
+    ACSet x = make_graph(1, {});
+    ACSet other(std::make_shared<schema::Schema>("Empty"));
+    HomSearchOptions opt;
+    opt.bind(kV, 0, 0);
+    EXPECT_EXIT(forced_homomorphism(x, other, opt), ::testing::ExitedWithCode(70),
+                "different schemas");
+}
+
 } // namespace
 } // namespace catplan::hom

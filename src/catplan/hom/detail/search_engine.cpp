@@ -689,12 +689,7 @@ bool Engine::bind_initial() {
 }
 
 bool Engine::prepare() {
-    std::size_t nobs = s_.num_obs(), ntypes = s_.num_attr_types();
-    CATPLAN_ASSERT(&x_.schema() == &y_.schema() ||
-                       (y_.schema().num_obs() == nobs && y_.schema().num_homs() == s_.num_homs() &&
-                        y_.schema().num_attrs() == s_.num_attrs() &&
-                        y_.schema().num_attr_types() == ntypes),
-                   "hom search between states on different schemas");
+    CATPLAN_ASSERT(searchable(x_, y_), "hom search between states on different schemas");
     std::vector<char> iso_ob, no_bind;
     floating_.clear();
     read_options(iso_ob, no_bind);
