@@ -26,6 +26,10 @@ ACSet::ACSet(SchemaPtr schema) : schema_(std::move(schema)) {
 }
 
 Part ACSet::add_part(ObId x, std::string_view name) {
+    return add_part(x, name.empty() ? Symbol() : Symbol::intern(name));
+}
+
+Part ACSet::add_part(ObId x, Symbol name) {
     auto p = static_cast<Part>(nparts_[x.index()]++);
     for (HomId f : schema_->homs_from(x)) {
         homs_[f.index()].push_back(kNoPart);
@@ -45,9 +49,9 @@ Part ACSet::add_part(ObId x, std::string_view name) {
         }
     }
     auto& names = names_[x.index()];
-    if (!name.empty() || !names.empty()) {
+    if (name != Symbol() || !names.empty()) {
         names.resize(p); // the first name: every earlier part is unnamed
-        names.push_back(name.empty() ? Symbol() : Symbol::intern(name));
+        names.push_back(name);
     }
     return p;
 }

@@ -51,6 +51,8 @@ public:
 
     /// Adds a part with unset homs and attributes, optionally named; returns its id.
     Part add_part(ObId x, std::string_view name = {});
+    /// Adds a part named by an interned name (Symbol() for none); returns its id.
+    Part add_part(ObId x, Symbol name);
     /// Adds n unnamed parts; returns the id of the first.
     Part add_parts(ObId x, std::size_t n);
     /// Removes a part by pop-and-swap; returns the former id of the part now at p, or kNoPart

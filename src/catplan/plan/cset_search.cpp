@@ -166,8 +166,10 @@ private:
             auto matches = rewrite::find_matches(*rules[ri], registry_.state(id));
             for (std::uint32_t mi = 0; mi < matches.size(); ++mi) {
                 ACSet next = registry_.state(id);
-                if (!rewrite::rewrite_in_place(*rules[ri], next, matches[mi])) {
-                    continue; // find_matches returns valid matches only; kept for robustness
+                auto applied = rewrite::rewrite_in_place(*rules[ri], next, matches[mi],
+                                                         rewrite::CheckMatch::No);
+                if (!applied) {
+                    continue; // an expression of R failed, or the step is not supported
                 }
                 ++stats_.generated;
                 auto ins = registry_.insert(std::move(next));

@@ -460,7 +460,8 @@ Validation validate_plan(const Problem& problem, const Plan& plan, const Validat
         if (v.cost) {
             v.cost = add_cost(*v.cost, *cost);
         }
-        auto applied = rewrite::rewrite_in_place(*rule, x, *m);
+        // m is resolve_step's: a match find_matches returned for x.
+        auto applied = rewrite::rewrite_in_place(*rule, x, *m, rewrite::CheckMatch::No);
         if (!applied) {
             v.failed_step = i;
             v.reason = fmt::format("{}: cannot apply: {}", prefix, applied.error());

@@ -27,7 +27,9 @@
 //     unless moved by a pop-and-swap; unknowns left without a cell are removed the same way.
 // Both check a match with match_problem's checks (one gluing mechanism: colimit::deletion) and
 // compute R's values with one function, then reject a rule whose r glues two kept parts, or two
-// kept values the match binds differently (not supported).
+// kept values the match binds differently (not supported). rewrite_in_place can be told that its
+// match comes from find_matches (CheckMatch::No), as planning and transfer apply the matches
+// they find: the checks find_matches made are not made twice (a tenth of a step's cost).
 
 #include "catplan/hom/hom_search.hpp"
 #include "catplan/rewrite/rule.hpp"
@@ -72,7 +74,15 @@ struct Rewrite {
 /// Applies rule at match m functionally; fails with the reason when m is not a valid match.
 Result<Rewrite> rewrite(const Rule& rule, const ACSet& x, const ACSetMorphism& m);
 
-/// Applies rule at match m to x in place and returns R -> x; on failure x is unchanged.
-Result<ACSetMorphism> rewrite_in_place(const Rule& rule, ACSet& x, const ACSetMorphism& m);
+/// Whether rewrite_in_place checks its match first (AlgebraicRewriting's `check` keyword).
+/// CheckMatch::No is for a match already checked against x as it is now: one find_matches
+/// returned, or one match_problem accepted (naturality, the gluing and application conditions).
+enum class CheckMatch { Yes, No };
+
+/// Applies rule at match m to x in place and returns R -> x; on failure x is unchanged. With
+/// CheckMatch::No, m must be a checked match (asserted: its components have L's sizes and land
+/// in x's parts; the rest is not checked again).
+Result<ACSetMorphism> rewrite_in_place(const Rule& rule, ACSet& x, const ACSetMorphism& m,
+                                       CheckMatch check = CheckMatch::Yes);
 
 } // namespace catplan::rewrite

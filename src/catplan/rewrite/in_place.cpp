@@ -1,6 +1,7 @@
 // The fast application of a rule (dpo.hpp, rewrite_in_place): X is edited where the rule touches
 // it, so a step costs the parts it deletes, creates and updates (and their incident parts).
 
+#include "catplan/base/assert.hpp"
 #include "catplan/rewrite/detail/relations.hpp"
 #include "catplan/rewrite/detail/shape.hpp"
 #include "catplan/rewrite/dpo.hpp"
@@ -66,8 +67,9 @@ public:
     void create() {
         for (std::uint32_t o = 0; o < s_.num_obs(); ++o) {
             ObId ob(o);
+            auto names = rule_.R.part_names(ob);
             for (Part rp : rule_.created_parts(ob)) {
-                out_.components[o][rp] = x_.add_part(ob, rule_.R.part_name(ob, rp));
+                out_.components[o][rp] = x_.add_part(ob, rp < names.size() ? names[rp] : Symbol());
             }
         }
     }
@@ -170,21 +172,54 @@ private:
     ACSetMorphism out_;
 };
 
+// The X parts a DPO step at a found match deletes (the images of L's parts outside l(K)), per
+// object and increasing, as colimit::deletion lists them; asserts what an out-of-range match
+// would otherwise read past.
+std::vector<std::vector<Part>> deleted_images(const Shape& shape, const ACSet& x,
+                                              const ACSetMorphism& m) {
+    const auto& rule = shape.rule;
+    const auto& s = x.schema();
+    CATPLAN_ASSERT(m.components.size() == s.num_obs(), "a found match has a component per object");
+    std::vector<std::vector<Part>> out(s.num_obs());
+    for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
+        const auto& component = m.components[o];
+        CATPLAN_ASSERT(component.size() == rule.L.num_parts(ObId(o)),
+                       "a found match has a part for each part of L");
+        for (Part q : component) {
+            CATPLAN_ASSERT(q < x.num_parts(ObId(o)), "a found match lands in the state's parts");
+        }
+        for (Part p : shape.gluing().outside_l[o]) {
+            out[o].push_back(component[p]);
+        }
+        std::sort(out[o].begin(), out[o].end());
+        out[o].erase(std::unique(out[o].begin(), out[o].end()), out[o].end());
+    }
+    return out;
+}
+
 } // namespace
 
-Result<ACSetMorphism> rewrite_in_place(const Rule& rule, ACSet& x, const ACSetMorphism& m) {
-    auto failures = hom::naturality_failures(m, rule.L, x);
-    if (!failures.empty()) {
-        return fail("the match is not a morphism: " + hom::describe(failures.front(), rule.L, x));
-    }
+Result<ACSetMorphism> rewrite_in_place(const Rule& rule, ACSet& x, const ACSetMorphism& m,
+                                       CheckMatch check) {
     const Shape& shape = rule.shape();
-    // The gluing conditions and the parts to delete come from one pass (colimit::deletion).
-    auto deletion = colimit::deletion(rule.K, rule.L, x, rule.l, m, shape.gluing());
-    if (!deletion.violations.empty()) {
-        return fail(deletion.violations.front().reason);
-    }
-    if (auto problem = detail::condition_problem(rule, x, m)) {
-        return fail(*problem);
+    std::vector<std::vector<Part>> deleted;
+    if (check == CheckMatch::No && !shape.gluing().cascade) {
+        deleted = deleted_images(shape, x, m);
+    } else {
+        auto failures = hom::naturality_failures(m, rule.L, x);
+        if (!failures.empty()) {
+            return fail("the match is not a morphism: " +
+                        hom::describe(failures.front(), rule.L, x));
+        }
+        // The gluing conditions and the parts to delete come from one pass (colimit::deletion).
+        auto deletion = colimit::deletion(rule.K, rule.L, x, rule.l, m, shape.gluing());
+        if (!deletion.violations.empty()) {
+            return fail(deletion.violations.front().reason);
+        }
+        if (auto problem = detail::condition_problem(rule, x, m)) {
+            return fail(*problem);
+        }
+        deleted = std::move(deletion.parts);
     }
     // Resolve R's variables before touching x, so a failing expression leaves x unchanged.
     auto r_var = detail::application_values(shape, m);
@@ -192,7 +227,7 @@ Result<ACSetMorphism> rewrite_in_place(const Rule& rule, ACSet& x, const ACSetMo
         return fail(r_var.error());
     }
     InPlace step(shape, x, m, *r_var);
-    step.remove(deletion.parts);
+    step.remove(deleted);
     step.create();
     step.set_homs();
     step.set_attrs();

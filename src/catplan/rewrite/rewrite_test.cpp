@@ -766,5 +766,50 @@ TEST(DPOProperties, ReferenceAndFastPathAgreeOnRandomRulesWithAttributes) {
     EXPECT_GT(spo, 120);
 }
 
+// A match find_matches returned needs no second check: applied unchecked, it gives the state,
+// names, comatch and failures (an expression, an unsupported step) that the checked application
+// gives, monic or not, DPO or SPO.
+TEST(DPOProperties, FoundMatchesApplyAsCheckedOnesDo) {
+    Attributed g;
+    int applied = 0, spo = 0, non_monic = 0;
+    for (unsigned seed = 1; seed <= 400; ++seed) {
+        SCOPED_TRACE(seed);
+        Dice d(seed);
+        Rule rule = random_attributed_rule(g, d);
+        ACSet x = random_graph(g, d, 3 + d.below(3), 3 + d.below(6), /*partial=*/false);
+        MatchOptions opt;
+        opt.monic = seed % 2 == 0;
+        for (const auto& m : find_matches(rule, x, opt)) {
+            ACSet checked = x, unchecked = x;
+            auto a = rewrite_in_place(rule, checked, m, CheckMatch::Yes);
+            auto b = rewrite_in_place(rule, unchecked, m, CheckMatch::No);
+            ASSERT_EQ(a.has_value(), b.has_value()) << describe_case(rule, x, m);
+            if (!a) {
+                EXPECT_EQ(a.error(), b.error());
+                continue;
+            }
+            EXPECT_EQ(checked, unchecked) << describe_case(rule, x, m);
+            EXPECT_EQ(acset::to_tables(checked), acset::to_tables(unchecked));
+            EXPECT_EQ(a->components, b->components);
+            EXPECT_EQ(a->var_components, b->var_components);
+            ++applied;
+            spo += rule.semantics == Semantics::SPO;
+            non_monic += !detail::is_injective(m, rule.L);
+        }
+    }
+    EXPECT_GT(applied, 300);
+    EXPECT_GT(spo, 50);
+    EXPECT_GT(non_monic, 20);
+}
+
+TEST(DPODeathTest, AnUncheckedMatchOutsideTheStateIsAnAssertion) {
+    Graphs g;
+    Rule rule = g.rule(g.graph(1, {}, {}), g.graph(0, {}, {}), g.graph(0, {}, {}), g.map({}, {}),
+                       g.map({}, {}));
+    ACSet x = g.graph(2, {}, {});
+    EXPECT_EXIT((void)rewrite_in_place(rule, x, g.map({7}, {}), CheckMatch::No),
+                testing::ExitedWithCode(70), "a found match lands in the state's parts");
+}
+
 } // namespace
 } // namespace catplan::rewrite

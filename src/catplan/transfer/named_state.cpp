@@ -20,9 +20,9 @@ NamedState::NamedState(acset::ACSet x)
     }
 }
 
-Result<hom::ACSetMorphism>
-NamedState::apply(const rewrite::Rule& rule, const hom::ACSetMorphism& m,
-                  const std::function<std::string(ObId, Part)>& name_of) {
+Result<hom::ACSetMorphism> NamedState::apply(const rewrite::Rule& rule, const hom::ACSetMorphism& m,
+                                             const std::function<std::string(ObId, Part)>& name_of,
+                                             rewrite::CheckMatch check) {
     const auto& s = x_.schema();
     // The parts to be deleted (the images of the parts the rule deletes), unnamed now. The parts
     // that survive the deletion keep the ids below survivors[o]; a created part is at or above
@@ -37,7 +37,7 @@ NamedState::apply(const rewrite::Rule& rule, const hom::ACSetMorphism& m,
         }
         survivors[o] = static_cast<Part>(x_.num_parts(ObId(o)) - parts.size());
     }
-    auto r_to_x = rewrite::rewrite_in_place(rule, x_, m);
+    auto r_to_x = rewrite::rewrite_in_place(rule, x_, m, check);
     if (!r_to_x) {
         return r_to_x;
     }

@@ -10,6 +10,7 @@
 #include "catplan/base/result.hpp"
 #include "catplan/hom/morphism.hpp"
 #include "catplan/plan/domain.hpp"
+#include "catplan/rewrite/dpo.hpp"
 #include "catplan/rewrite/rule.hpp"
 #include "catplan/transfer/name_index.hpp"
 
@@ -46,9 +47,11 @@ public:
     bool has_ambiguous_names(ObId ob) const { return ambiguous_[ob.index()] > 0; }
 
     /// Applies rule at m in place, naming each created part with name_of(ob, part of R); returns
-    /// the comatch R -> X.
+    /// the comatch R -> X. CheckMatch::No for a match find_matches (or match_by_names) returned
+    /// for this state as it is (rewrite_in_place).
     Result<hom::ACSetMorphism> apply(const rewrite::Rule& rule, const hom::ACSetMorphism& m,
-                                     const std::function<std::string(ObId, Part)>& name_of);
+                                     const std::function<std::string(ObId, Part)>& name_of,
+                                     rewrite::CheckMatch check = rewrite::CheckMatch::Yes);
 
     /// A name for a new part of ob, starting from base, that no part of ob has: base, else
     /// base2, base3, ... (the first free one). The search for a suffix starts at a hint per base

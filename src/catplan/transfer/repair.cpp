@@ -50,7 +50,8 @@ Result<bool> replay(const plan::Domain& target, NamedState& z, const std::vector
         if (!m) {
             return fail(m.error());
         }
-        auto applied = z.apply(*rule, *m, [&](ObId ob, Part) { return name(z, ob); });
+        auto applied = z.apply(
+            *rule, *m, [&](ObId ob, Part) { return name(z, ob); }, rewrite::CheckMatch::No);
         if (!applied) {
             return fail(applied.error());
         }

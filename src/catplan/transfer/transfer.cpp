@@ -310,14 +310,17 @@ private:
         auto r_to_x = apply_source(i, *a->source, *m);
         CATPLAN_ASSERT(r_to_x, "a valid source match failed to apply");
         // A part created in the target is named after the source part its tuple starts at.
-        auto applied = y_->apply(*a->target, matches[0], [&](ObId c, Part q) {
-            const auto& origin = a->r_origins[c.index()];
-            if (!origin || q >= origin->parts.size()) {
-                return created_name(c, i);
-            }
-            Part in_x = r_to_x->components[origin->ob.index()][origin->parts[q]];
-            return renamed(renaming_, x_->state().part_name(origin->ob, in_x));
-        });
+        auto applied = y_->apply(
+            *a->target, matches[0],
+            [&](ObId c, Part q) {
+                const auto& origin = a->r_origins[c.index()];
+                if (!origin || q >= origin->parts.size()) {
+                    return created_name(c, i);
+                }
+                Part in_x = r_to_x->components[origin->ob.index()][origin->parts[q]];
+                return renamed(renaming_, x_->state().part_name(origin->ob, in_x));
+            },
+            rewrite::CheckMatch::No);
         if (!applied) {
             return fail_at(i, applied.error());
         }
@@ -349,17 +352,21 @@ private:
         return z.fresh_name(ob, step_name(target_prefixes_, *f_.target(), ob, i));
     }
 
-    // Applies the source step, naming a created part after its generator in the rule, or after
-    // its object and the step that created it (block@2).
+    // Applies the source step at m (match_by_names found it for x_ as it is), naming a created
+    // part after its generator in the rule, or after its object and the step that created it
+    // (block@2).
     Result<ACSetMorphism> apply_source(std::size_t i, const rewrite::Rule& rule,
                                        const ACSetMorphism& m) {
-        return x_->apply(rule, m, [&](ObId ob, Part q) {
-            std::string base(rule.R.part_name(ob, q));
-            if (base.empty()) {
-                base = step_name(source_prefixes_, *problem_.domain->schema, ob, i);
-            }
-            return x_->fresh_name(ob, base);
-        });
+        return x_->apply(
+            rule, m,
+            [&](ObId ob, Part q) {
+                std::string base(rule.R.part_name(ob, q));
+                if (base.empty()) {
+                    base = step_name(source_prefixes_, *problem_.domain->schema, ob, i);
+                }
+                return x_->fresh_name(ob, base);
+            },
+            rewrite::CheckMatch::No);
     }
 
     // ob's name in lower case, '@' and step i's number (clear@2); `prefixes` keeps the part

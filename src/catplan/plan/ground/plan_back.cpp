@@ -59,7 +59,7 @@ public:
         }
         auto created = created_slots(a, rule);
         track_deletions(rule, *m);
-        auto r_to_x = rewrite::rewrite_in_place(rule, x_, *m);
+        auto r_to_x = rewrite::rewrite_in_place(rule, x_, *m, rewrite::CheckMatch::No);
         if (!r_to_x) {
             return fail(r_to_x.error());
         }
