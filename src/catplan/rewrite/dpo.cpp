@@ -193,12 +193,29 @@ Written written_attr(const Rule& rule, const std::vector<std::vector<Value>>& r_
 
 // Why the match cannot be applied because it sends several kept parts to one part of X and Eff
 // gives them different values of a hom or attribute, which the pushout would glue.
+// Whether m sends two kept parts of ob to one part of X (a few kept parts: compared pairwise).
+bool identifies_kept_parts(const Rule& rule, const ACSetMorphism& m, ObId ob) {
+    std::size_t n = rule.K.num_parts(ob);
+    for (Part k = 1; k < n; ++k) {
+        Part image = m(ob, rule.l(ob, k));
+        for (Part j = 0; j < k; ++j) {
+            if (m(ob, rule.l(ob, j)) == image) {
+                return true;
+            }
+        }
+    }
+    return false;
+}
+
 std::optional<std::string> identified_kept_problem(const Shape& shape, const ACSetMorphism& m,
                                                    const std::vector<std::vector<Value>>& r_var) {
     const Rule& rule = shape.rule;
     const auto& s = rule.K.schema();
     for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
         ObId ob(o);
+        if (!identifies_kept_parts(rule, m, ob)) {
+            continue; // no two kept parts share an image: nothing to glue
+        }
         std::vector<std::pair<Part, Part>> by_image; // (X part, R part of a kept part)
         for (Part k = 0; k < rule.K.num_parts(ob); ++k) {
             by_image.emplace_back(m(ob, rule.l(ob, k)), rule.r(ob, k));
