@@ -3,7 +3,7 @@
 
     pddl_transfer_vs_fd.py --catplan BUILD/catplan --peers ../shared/peers --out DIR
                            [--blocks 30,100] [--directions 4to3,3to4] [--runs 3]
-                           [--transfer-runs 9] [--batch 32] [--limit 900]
+                           [--transfer-runs 9] [--batch 32] [--limit 900] [--repeat 20]
 
 For each direction and each seeded blocksworld problem of N blocks in the source domain:
   4to3: the 4-operator blocksworld (examples/pddl/blocks/blocks4.pddl) carried along
@@ -24,6 +24,11 @@ and the plan lengths, the start-up floor of the harness (a process that does not
 `catplan --version`, timed the same way), and the load average of the machine before and after.
 Each run is timed whole, wall and CPU (user + system of the process and its children): on a shared
 machine the wall time of a short process depends on the load more than its CPU time does.
+
+With --repeat R, the whole comparison runs R times over, each run printed as it ends, then a
+summary per direction and size: the R ratios sorted, their median, and in how many runs the
+transfer was at least 100x faster (wall and CPU). A shared machine's slower phases move single
+runs of a short process far more than FD's; the median over runs is the figure to compare.
 
 With --batch K (4to3 only), the same source plan K times over in one directory, transferred by one
 catplan process with --jobs 1 and --jobs 2: the throughput of batch transfer on one core and on two.
@@ -210,26 +215,18 @@ def batch(a, map_file, map_name, problem, splan, d):
     return out
 
 
-def main():
-    p = argparse.ArgumentParser()
-    p.add_argument("--catplan", type=pathlib.Path, required=True)
-    p.add_argument("--peers", type=pathlib.Path, required=True)
-    p.add_argument("--out", type=pathlib.Path, required=True)
-    p.add_argument("--blocks", default="30,100")
-    p.add_argument("--directions", default="4to3,3to4")
-    p.add_argument("--runs", type=int, default=3)
-    p.add_argument("--transfer-runs", type=int, default=9)
-    p.add_argument("--batch", type=int, default=0)
-    p.add_argument("--limit", type=int, default=900)
-    a = p.parse_args()
-    if a.runs < 1 or a.transfer_runs < 1:
-        p.error("--runs and --transfer-runs must be at least 1")
+def measure(a):
+    """One run of the whole comparison: the rows, the start-up floor and the load around them."""
     load_before = os.getloadavg()
     floors = [start_floor(a)]
     rows = [r for direction in a.directions.split(",") for n in map(int, a.blocks.split(","))
             if (r := one_size(a, direction, n, a.out))]
     floors.append(start_floor(a))
-    load_after = os.getloadavg()
+    floor = {k: tuple(statistics.mean(f[k][i] for f in floors) for i in (0, 1)) for k in floors[0]}
+    return rows, floor, load_before, os.getloadavg()
+
+
+def print_run(a, rows, floor, load_before, load_after):
     print(f"load average (1, 5, 15 min) before: {load_before[0]:.2f} {load_before[1]:.2f} "
           f"{load_before[2]:.2f}; after: {load_after[0]:.2f} {load_after[1]:.2f} {load_after[2]:.2f}")
     print("| direction | blocks | source steps (FD) | transferred steps | FD replanned steps "
@@ -242,9 +239,7 @@ def main():
         print(f"| {r['direction']} | {r['n']} | {r['source_steps']} | {r['target_steps']} "
               f"| {r['fd_target_steps']} | {r['transfer_s']:.3f} ({r['transfer_cpu']:.3f}) "
               f"| {r['replan_s']:.3f} ({r['replan_cpu']:.3f}; {r['replan_search_s']:.3f}) "
-              f"| {r['replan_s'] / r['transfer_s']:.0f}x, "
-              f"{r['replan_cpu'] / max(r['transfer_cpu'], 1e-3):.0f}x{bound} | {ok} |")
-    floor = {k: tuple(statistics.mean(f[k][i] for f in floors) for i in (0, 1)) for k in floors[0]}
+              f"| {wall_ratio(r):.0f}x, {cpu_ratio(r):.0f}x{bound} | {ok} |")
     print(f"\nstart-up in this harness (medians of {a.transfer_runs} runs, before and after the rows, "
           f"averaged): a process that does nothing (/bin/true) {floor['true'][0] * 1e3:.1f} ms wall "
           f"({floor['true'][1] * 1e3:.1f} ms CPU); `catplan --version` "
@@ -260,6 +255,62 @@ def main():
         for r in batched:
             j1, j2 = r["batch_jobs1_s"], r["batch_jobs2_s"]
             print(f"| {r['n']} | {j1:.3f} | {j2:.3f} | {j1 / j2:.2f} |")
+
+
+def wall_ratio(r):
+    return r["replan_s"] / r["transfer_s"]
+
+
+def cpu_ratio(r):
+    return r["replan_cpu"] / max(r["transfer_cpu"], 1e-3)
+
+
+def print_summary(runs):
+    """Over the runs of --repeat: each direction and size's ratios, their median, and in how many
+    runs the transfer was at least 100x faster (a shared machine's slow phases move single runs;
+    the median over runs is the figure to compare)."""
+    print(f"\nover {len(runs)} runs (each a row above; ratios sorted):")
+    print("| direction | blocks | wall ratios | median wall | runs at 100x wall "
+          "| CPU ratios, min to max | median CPU | runs at 100x CPU |")
+    print("|---|---|---|---|---|---|---|---|")
+    keys = sorted({(r["direction"], r["n"]) for rows, _ in runs for r in rows})
+    for key in keys:
+        rs = [r for rows, _ in runs for r in rows if (r["direction"], r["n"]) == key]
+        wall = sorted(wall_ratio(r) for r in rs)
+        cpu = sorted(cpu_ratio(r) for r in rs)
+        print(f"| {key[0]} | {key[1]} | {', '.join(f'{w:.0f}' for w in wall)} "
+              f"| {statistics.median(wall):.0f}x | {sum(w >= 100 for w in wall)} of {len(wall)} "
+              f"| {cpu[0]:.0f} to {cpu[-1]:.0f} | {statistics.median(cpu):.0f}x "
+              f"| {sum(c >= 100 for c in cpu)} of {len(cpu)} |")
+
+
+def main():
+    p = argparse.ArgumentParser()
+    p.add_argument("--catplan", type=pathlib.Path, required=True)
+    p.add_argument("--peers", type=pathlib.Path, required=True)
+    p.add_argument("--out", type=pathlib.Path, required=True)
+    p.add_argument("--blocks", default="30,100")
+    p.add_argument("--directions", default="4to3,3to4")
+    p.add_argument("--runs", type=int, default=3)
+    p.add_argument("--transfer-runs", type=int, default=9)
+    p.add_argument("--batch", type=int, default=0)
+    p.add_argument("--limit", type=int, default=900)
+    p.add_argument("--repeat", type=int, default=1,
+                   help="run the whole comparison this many times, then summarise the ratios")
+    a = p.parse_args()
+    if a.runs < 1 or a.transfer_runs < 1 or a.repeat < 1:
+        p.error("--runs, --transfer-runs and --repeat must be at least 1")
+    runs = []
+    for k in range(a.repeat):
+        if a.repeat > 1:
+            print(f"{'' if k == 0 else chr(10)}run {k + 1} of {a.repeat}, "
+                  f"{time.strftime('%H:%M:%S', time.gmtime())} UTC", flush=True)
+        rows, floor, load_before, load_after = measure(a)
+        print_run(a, rows, floor, load_before, load_after)
+        runs.append((rows, floor))
+        sys.stdout.flush()
+    if a.repeat > 1:
+        print_summary(runs)
 
 
 if __name__ == "__main__":
