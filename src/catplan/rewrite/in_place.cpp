@@ -203,6 +203,7 @@ Result<ACSetMorphism> rewrite_in_place(const Rule& rule, ACSet& x, const ACSetMo
                                        CheckMatch check) {
     const Shape& shape = rule.shape();
     std::vector<std::vector<Part>> deleted;
+    // An SPO rule's deletion cascades through x: colimit::deletion computes it, checks and all.
     if (check == CheckMatch::No && !shape.gluing().cascade) {
         deleted = deleted_images(shape, x, m);
     } else {
