@@ -105,6 +105,12 @@ struct Deletion {
                                              // cascade (each by object or hom, then by part)
 };
 
+/// Per object, the images under m of the parts of L outside l(K) (`outside_l`, as
+/// parts_outside_image(l, L) gives them), increasing and without repeats: what a DPO deletion at
+/// m removes.
+std::vector<std::vector<Part>> deleted_images(const ACSetMorphism& m,
+                                              const std::vector<std::vector<Part>>& outside_l);
+
 /// The parts of X that deleting m(L - l(K)) removes (with the cascade, if asked) and every
 /// gluing violation; costs what the deletion touches (the cascade also O(size of X)).
 Deletion deletion(const ACSet& k, const ACSet& l_state, const ACSet& x, const ACSetMorphism& l,

@@ -49,15 +49,10 @@ struct Span {
     }
 };
 
-// A left leg that is not monic, and the identification condition: a deleted part of L must not
-// share its image with another part of L. Records the images of the deleted parts in out.parts.
-void check_left(const Span& in, Deletion& out) {
+// A left leg that is not monic, and the identification condition: a deleted part of L (one of
+// `outside`) must not share its image with another part of L.
+void check_left(const Span& in, const std::vector<std::vector<Part>>& outside, Deletion& out) {
     const auto& s = in.x.schema();
-    std::vector<std::vector<Part>> computed;
-    if (in.options.outside_l.empty()) {
-        computed = parts_outside_image(in.l, in.l_state);
-    }
-    const auto& outside = in.options.outside_l.empty() ? computed : in.options.outside_l;
     // Per part of L, reused from object to object: kept once (kSeen), not kept at all (kDeleted).
     constexpr char kSeen = 1, kDeleted = 2;
     std::vector<char> flags;
@@ -80,9 +75,7 @@ void check_left(const Span& in, Deletion& out) {
         }
         for (Part p : outside[o]) {
             flags[p] |= kDeleted;
-            out.parts[o].push_back(in.m(ob, p));
         }
-        sort_unique(out.parts[o]);
         // Group L's parts by image; each later member of a group is compared with the first.
         by_image.clear();
         for (Part p = 0; p < in.l_state.num_parts(ob); ++p) {
@@ -194,12 +187,30 @@ void cascade(const Span& in, Deletion& out) {
 
 } // namespace
 
+std::vector<std::vector<Part>> deleted_images(const ACSetMorphism& m,
+                                              const std::vector<std::vector<Part>>& outside_l) {
+    std::vector<std::vector<Part>> out(outside_l.size());
+    for (std::uint32_t o = 0; o < outside_l.size(); ++o) {
+        for (Part p : outside_l[o]) {
+            out[o].push_back(m(ObId(o), p));
+        }
+        sort_unique(out[o]);
+    }
+    return out;
+}
+
 Deletion deletion(const ACSet& k, const ACSet& l_state, const ACSet& x, const ACSetMorphism& l,
                   const ACSetMorphism& m, const ComplementOptions& options) {
     Span in{k, l_state, x, l, m, options};
+    std::vector<std::vector<Part>> computed;
+    if (options.outside_l.empty()) {
+        computed = parts_outside_image(l, l_state);
+    }
+    const auto& outside = options.outside_l.empty() ? computed : options.outside_l;
     Deletion out;
+    out.parts = deleted_images(m, outside);
     out.parts.resize(x.schema().num_obs());
-    check_left(in, out);
+    check_left(in, outside, out);
     if (options.cascade) {
         cascade(in, out);
     } else {

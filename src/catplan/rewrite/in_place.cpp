@@ -172,15 +172,13 @@ private:
     ACSetMorphism out_;
 };
 
-// The X parts a DPO step at a found match deletes (the images of L's parts outside l(K)), per
-// object and increasing, as colimit::deletion lists them; asserts what an out-of-range match
-// would otherwise read past.
+// The X parts a DPO step at a found match deletes (colimit::deleted_images), after asserting
+// what an out-of-range match would otherwise read past.
 std::vector<std::vector<Part>> deleted_images(const Shape& shape, const ACSet& x,
                                               const ACSetMorphism& m) {
     const auto& rule = shape.rule;
     const auto& s = x.schema();
     CATPLAN_ASSERT(m.components.size() == s.num_obs(), "a found match has a component per object");
-    std::vector<std::vector<Part>> out(s.num_obs());
     for (std::uint32_t o = 0; o < s.num_obs(); ++o) {
         const auto& component = m.components[o];
         CATPLAN_ASSERT(component.size() == rule.L.num_parts(ObId(o)),
@@ -188,13 +186,8 @@ std::vector<std::vector<Part>> deleted_images(const Shape& shape, const ACSet& x
         for (Part q : component) {
             CATPLAN_ASSERT(q < x.num_parts(ObId(o)), "a found match lands in the state's parts");
         }
-        for (Part p : shape.gluing().outside_l[o]) {
-            out[o].push_back(component[p]);
-        }
-        std::sort(out[o].begin(), out[o].end());
-        out[o].erase(std::unique(out[o].begin(), out[o].end()), out[o].end());
     }
-    return out;
+    return colimit::deleted_images(m, shape.gluing().outside_l);
 }
 
 } // namespace
